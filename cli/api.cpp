@@ -1,0 +1,37 @@
+// Throwing wrappers over the C API calls that several commands share.
+#include "cli.h"
+
+namespace isoform::cli {
+
+void check(isoform_status status) {
+  if (status != ISOFORM_OK) {
+    const int code = status == ISOFORM_ERR_CANCELLED ? kInterruptedExitCode : 1;
+    throw Failure(isoform_last_error(), code);
+  }
+}
+
+VolumePtr open_volume(const std::string& path) {
+  isoform_volume* volume = nullptr;
+  check(isoform_volume_open(path.c_str(), &volume));
+  return VolumePtr(volume);
+}
+
+isoform_grid_info grid_info(const isoform_volume* volume, int index) {
+  isoform_grid_info info{};
+  check(isoform_volume_grid_info(volume, index, &info));
+  return info;
+}
+
+int find_grid(const isoform_volume* volume, const std::string& name) {
+  const int index = isoform_volume_find_grid(volume, name.c_str());
+  if (index < 0) throw Failure(isoform_last_error());
+  return index;
+}
+
+isoform_mesh_stats mesh_stats(const isoform_mesh* mesh) {
+  isoform_mesh_stats stats{};
+  check(isoform_mesh_stats_get(mesh, &stats));
+  return stats;
+}
+
+}  // namespace isoform::cli

@@ -1,0 +1,65 @@
+// What the isoform commands share: the failure type that main() turns into an
+// exit code, owning wrappers for the C API's handles, and the registration
+// function of each subcommand. The CLI sees the library only through
+// isoform.h (ARCHITECTURE.md: cli/ must not reach into libcore's C++ types).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/App.hpp>
+
+#include "isoform.h"
+
+namespace isoform::cli {
+
+// A failure the user sees as one line, "isoform: error: <message>", and as
+// the process's exit code (1 for every failure but an interrupt).
+class Failure : public std::runtime_error {
+ public:
+  explicit Failure(const std::string& message, int exit_code = 1)
+      : std::runtime_error(message), exit_code_(exit_code) {}
+  int exit_code() const { return exit_code_; }
+
+ private:
+  int exit_code_;
+};
+
+// The conventional exit code of a process stopped by Ctrl-C (128 + SIGINT).
+constexpr int kInterruptedExitCode = 130;
+
+// Throws Failure with isoform_last_error() when status is not ISOFORM_OK.
+// Call it on the thread that made the failed call: the message is per thread.
+void check(isoform_status status);
+
+struct VolumeDeleter {
+  void operator()(isoform_volume* volume) const { isoform_volume_free(volume); }
+};
+struct MeshDeleter {
+  void operator()(isoform_mesh* mesh) const { isoform_mesh_free(mesh); }
+};
+using VolumePtr = std::unique_ptr<isoform_volume, VolumeDeleter>;
+using MeshPtr = std::unique_ptr<isoform_mesh, MeshDeleter>;
+
+// Thin throwing forms of the C API calls that several commands make.
+VolumePtr open_volume(const std::string& path);
+isoform_grid_info grid_info(const isoform_volume* volume, int index);
+// The index of grid `name` ("" = the first scalar grid).
+int find_grid(const isoform_volume* volume, const std::string& name);
+isoform_mesh_stats mesh_stats(const isoform_mesh* mesh);
+
+// A subcommand and what runs it once its arguments are parsed. run throws
+// Failure (or another std::exception) on error.
+struct Command {
+  CLI::App* app;
+  std::function<void()> run;
+};
+
+Command add_info_command(CLI::App& parent);
+Command add_contour_command(CLI::App& parent);
+Command add_convert_command(CLI::App& parent);
+Command add_pipeline_command(CLI::App& parent);
+
+}  // namespace isoform::cli

@@ -1,0 +1,76 @@
+// `isoform contour FILE -o OUT`: one grid to a closed triangle mesh file.
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli.h"
+#include "contouring.h"
+#include "paths.h"
+#include "report.h"
+
+namespace isoform::cli {
+namespace {
+
+struct ContourArgs {
+  std::string input;
+  std::string output;
+  std::string grid;  // "" = the first scalar grid
+  ContourSettings settings;
+  bool json = false;
+};
+
+void report_contour(const ContourArgs& args, const isoform_grid_info& info,
+                    const ContourResult& result, double write_seconds) {
+  if (args.json) {
+    Json j = {{"input", args.input},
+                        {"grid", std::string(info.name)},
+                        {"class", class_name(info.grid_class)},
+                        {"method", args.settings.method},
+                        {"output", args.output},
+                        {"contour_seconds", result.seconds},
+                        {"write_seconds", write_seconds}};
+    j.update(mesh_json(result.stats));
+    print_json(j);
+    return;
+  }
+  std::cout << args.input << ", grid '" << info.name << "' (" << class_name(info.grid_class)
+            << "), method " << args.settings.method << '\n';
+  print_mesh(std::cout, result.stats);
+  print_row(std::cout, "time", format_seconds(result.seconds));
+  std::cout << "wrote " << args.output << '\n';
+}
+
+void run_contour(const ContourArgs& args) {
+  check_output_path(args.input, args.output, {".ply", ".obj", ".stl"});
+  const VolumePtr volume = open_volume(args.input);
+  const int grid = find_grid(volume.get(), args.grid);
+  const ContourResult result = contour_grid(args.input, volume.get(), grid, args.settings);
+  const double write_seconds = save_mesh(result.mesh.get(), args.output);
+  report_contour(args, grid_info(volume.get(), grid), result, write_seconds);
+}
+
+}  // namespace
+
+Command add_contour_command(CLI::App& parent) {
+  auto args = std::make_shared<ContourArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "contour", "Contour a grid into a closed triangle mesh (.ply, .obj, .stl)");
+  app->footer(
+      "The mesh is closed, manifold and consistently oriented, in world coordinates, with a "
+      "unit normal per vertex (PLY and OBJ) and a part id per triangle (PLY). Without --iso, a "
+      "grid that is not a level set is contoured at the midpoint of its value range, and a note "
+      "on stderr says so. Example: isoform contour scan.vdb --iso 500 -o skin.ply");
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")
+      ->required();
+  app->add_option("--grid", args->grid, "Grid to contour (default: the first scalar grid)");
+  add_contour_options(*app, args->settings,
+                      "Isovalue, in the grid's value units (default: 0 for a level set, the "
+                      "midpoint of the value range for other grids)");
+  app->add_flag("--json", args->json, "Print one JSON object instead of text");
+  return {app, [args] { run_contour(*args); }};
+}
+
+}  // namespace isoform::cli

@@ -1,0 +1,67 @@
+// The isoform command: parses the command line, runs one subcommand, and is
+// the one place that turns failures into messages and exit codes:
+// 0 success, 1 failure (one line on stderr), 2 usage error, 130 interrupted.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli.h"
+
+namespace {
+
+using isoform::cli::Command;
+
+constexpr int kUsageExitCode = 2;
+
+std::string version_text() {
+  const int v = isoform_version();
+  return "isoform " + std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." +
+         std::to_string(v % 100);
+}
+
+// Library messages are meant to be one line; a stray newline would break the
+// "one line on stderr" promise scripts rely on.
+void print_error(std::string message) {
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::cerr << "isoform: error: " << message << '\n';
+}
+
+int run_parsed(const std::vector<Command>& commands) {
+  for (const Command& command : commands) {
+    if (!command.app->parsed()) continue;
+    try {
+      command.run();
+      return 0;
+    } catch (const isoform::cli::Failure& failure) {
+      print_error(failure.what());
+      return failure.exit_code();
+    } catch (const std::exception& error) {
+      print_error(error.what());
+      return 1;
+    }
+  }
+  return kUsageExitCode;  // require_subcommand(1) makes this unreachable
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"isoform: scalar volumes (OpenVDB grids, CT scans) to watertight triangle meshes, "
+               "after Hamann (1991), Chapter 3",
+               "isoform"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", version_text);
+  const std::vector<Command> commands = {
+      isoform::cli::add_info_command(app), isoform::cli::add_contour_command(app),
+      isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // app.exit prints help or version (code 0) or the usage error.
+    return app.exit(error) == 0 ? 0 : kUsageExitCode;
+  }
+  return run_parsed(commands);
+}

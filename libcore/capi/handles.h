@@ -1,0 +1,42 @@
+// What the opaque handles of isoform.h hold, and the one place where C++
+// exceptions become an isoform_status. Shared by the C API sources in libcore
+// and vdbio; not installed, not seen by callers.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "../isoform.h"
+#include "../mesh.h"
+#include "../volume.h"
+
+struct isoform_volume {
+  std::shared_ptr<isoform::VolumeFile> file;
+  // Grids loaded so far, by index: loading happens once per grid.
+  mutable std::mutex mutex;
+  mutable std::map<int, std::shared_ptr<const isoform::ScalarGrid>> loaded;
+
+  std::shared_ptr<const isoform::ScalarGrid> grid(int index) const;
+};
+
+struct isoform_mesh {
+  isoform::Mesh mesh;
+};
+
+namespace isoform::capi {
+
+// Records msg as this thread's last error and returns status.
+isoform_status fail(isoform_status status, const std::string& msg);
+// Clears this thread's last error.
+void clear_error();
+
+// Runs body (which returns isoform_status) and turns every exception into a
+// status and a message. The only place the C boundary catches.
+template <class Body>
+isoform_status guarded(Body&& body) noexcept;
+
+}  // namespace isoform::capi
+
+#include "guarded.inl"

@@ -1,0 +1,289 @@
+// Contouring one brick with the trilinear-consistent cell method or the six
+// tetrahedra (Hamann 1991, Section 3.2), with Zucker-Hummel normals
+// interpolated along edges (3.18) and inside cells (3.19).
+#include "brick_contour.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "../errors.h"
+#include "cell_polygons.h"
+#include "cell_table.h"
+#include "gradient.h"
+#include "tetra.h"
+
+namespace isoform {
+
+namespace {
+constexpr double kNearSample = 1e-3;  // fraction of an edge
+}  // namespace
+
+uint64_t edge_key(int x, int y, int z, int slot) {
+  constexpr int64_t half = int64_t(1) << 19;
+  const int64_t c[3] = {x + half, y + half, z + half};
+  for (int64_t v : c)
+    if (v < 0 || v >= 2 * half)
+      throw Unsupported("index coordinate beyond +-524288: isoform's vertex keys hold 20 bits per axis");
+  return (uint64_t(c[0]) << 43) | (uint64_t(c[1]) << 23) | (uint64_t(c[2]) << 3) | uint64_t(slot);
+}
+
+BrickContourer::BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method)
+    : xform_(index_to_world), iso_(isovalue), method_(method),
+      slots_(method == ContourMethod::Tetra ? 7 : 3) {}
+
+double BrickContourer::moved(int i, int j, int k) const {
+  // Remark 3.8: a sample equal to the isovalue counts as above and moves up
+  // by a thousandth of the smallest non-zero difference among its six
+  // neighbours. The move depends on the sample's neighbourhood only, so every
+  // cell and every brick that shares the sample moves it alike, and the
+  // vertices it makes stay a thousandth of an edge from the sample instead of
+  // collapsing onto it.
+  const Brick& b = *brick_;
+  const double v = double(b.value(i, j, k)) - iso_;
+  if (v != 0.0) return v;
+  static const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& s : step) {
+    if (!b.is_defined(i + s[0], j + s[1], k + s[2])) continue;
+    const double d = std::abs(double(b.value(i + s[0], j + s[1], k + s[2])) - iso_);
+    if (d > 0.0 && d < smallest) smallest = d;
+  }
+  return std::isfinite(smallest) ? 1e-3 * smallest : 1e-9 * std::max(1.0, std::abs(iso_));
+}
+
+void BrickContourer::prepare(const Brick& brick) {
+  brick_ = &brick;
+  for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
+  const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
+  g_.resize(count);
+  for (int k = 0; k < n_[2]; ++k)
+    for (int j = 0; j < n_[1]; ++j)
+      for (int i = 0; i < n_[0]; ++i) {
+        const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
+        g_[at] = brick.is_defined(i, j, k) ? moved(i, j, k) : std::numeric_limits<double>::quiet_NaN();
+      }
+}
+
+bool BrickContourer::crosses() const {
+  bool pos = false, neg = false;
+  for (double v : g_) {
+    pos |= v > 0;
+    neg |= v < 0;
+  }
+  return pos && neg;
+}
+
+bool BrickContourer::gather(int i, int j, int k, double g[8]) const {
+  for (int c = 0; c < 8; ++c) {
+    const size_t at = (size_t(k + (c >> 2)) * size_t(n_[1]) + size_t(j + ((c >> 1) & 1))) * size_t(n_[0]) +
+                      size_t(i + (c & 1));
+    g[c] = g_[at];
+    if (std::isnan(g[c])) return false;
+  }
+  return true;
+}
+
+const Vec3d& BrickContourer::gradient(int i, int j, int k) {
+  const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
+  if (!has_grad_[at]) {
+    grad_[at] = zucker_hummel(*brick_, i, j, k);
+    has_grad_[at] = 1;
+  }
+  return grad_[at];
+}
+
+int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
+  const Vec3d w = xform_.apply(index_pos);
+  const Vec3d n = xform_.apply_normal(grad);
+  for (int a = 0; a < 3; ++a) {
+    out_->points.push_back(float(w[a]));
+    out_->gradients.push_back(float(n[a]));
+  }
+  return int32_t(out_->points.size() / 3 - 1);
+}
+
+bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
+  prepare(brick);
+  if (!crosses()) return false;
+  out_ = &out;
+  const size_t count = g_.size();
+  grad_.resize(count);
+  has_grad_.assign(count, 0);
+  slot_vertex_.assign(count * size_t(slots_), -1);
+  double g[8];
+  for (int k = 0; k < brick.cells[2]; ++k)
+    for (int j = 0; j < brick.cells[1]; ++j)
+      for (int i = 0; i < brick.cells[0]; ++i) {
+        if (!gather(i, j, k, g)) continue;
+        int above = 0;
+        for (int c = 0; c < 8; ++c) above |= (g[c] > 0) << c;
+        if (above == 0 || above == 255) continue;
+        if (method_ == ContourMethod::Cells)
+          contour_cell_trilinear(i, j, k, g);
+        else
+          contour_cell_tetra(i, j, k, g);
+      }
+  return true;
+}
+
+int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
+  // Canonical direction and key sample, so that every cell (and brick) that
+  // uses this edge computes the same point from the same two values.
+  const int diff = p ^ q;
+  const int bits = (diff & 1) + ((diff >> 1) & 1) + ((diff >> 2) & 1);
+  int start = p, end = q, slot = 0, key_corner = 0;
+  if (bits == 1) {
+    if (p & diff) std::swap(start, end);
+    slot = diff == 1 ? 0 : diff == 2 ? 1 : 2;
+    key_corner = start;
+  } else if (bits == 2) {
+    const int a = diff == 6 ? 0 : diff == 5 ? 1 : 2;  // the face's normal axis
+    const int lo_axis_bit = diff & -diff;              // the lower tangential axis
+    if (!(start & lo_axis_bit)) std::swap(start, end);
+    slot = 3 + a;
+    key_corner = p & (1 << a);
+  } else {
+    if (start != 1) std::swap(start, end);
+    slot = 6;
+    key_corner = 0;
+  }
+  const int kx = ci + (key_corner & 1), ky = cj + ((key_corner >> 1) & 1), kz = ck + (key_corner >> 2);
+  const size_t at =
+      ((size_t(kz) * size_t(n_[1]) + size_t(ky)) * size_t(n_[0]) + size_t(kx)) * size_t(slots_) + size_t(slot);
+  if (slot_vertex_[at] >= 0) return slot_vertex_[at];
+
+  const int sx = ci + (start & 1), sy = cj + ((start >> 1) & 1), sz = ck + (start >> 2);
+  const int ex = ci + (end & 1), ey = cj + ((end >> 1) & 1), ez = ck + (end >> 2);
+  const double gs = g_[(size_t(sz) * size_t(n_[1]) + size_t(sy)) * size_t(n_[0]) + size_t(sx)];
+  const double ge = g_[(size_t(ez) * size_t(n_[1]) + size_t(ey)) * size_t(n_[0]) + size_t(ex)];
+  // NOTE: a crossing closer than a thousandth of the edge to a sample is
+  // held at that distance, so that the several vertices around a sample
+  // whose value is within rounding of the isovalue stay distinct in float
+  // output instead of making zero-area triangles.
+  double t = gs / (gs - ge);
+  if (t < kNearSample || t > 1.0 - kNearSample) {
+    t = std::clamp(t, kNearSample, 1.0 - kNearSample);
+    ++out_->stats.near_sample_points;
+  }
+  const Index3& o = brick_->origin;
+  const Vec3d pos{o[0] + sx + t * (ex - sx), o[1] + sy + t * (ey - sy), o[2] + sz + t * (ez - sz)};
+  const Vec3d& a = gradient(sx, sy, sz);
+  const Vec3d& b = gradient(ex, ey, ez);
+  const Vec3d grad{(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]};
+  const int32_t id = add_vertex(pos, grad);
+  slot_vertex_[at] = id;
+
+  // Shared with another brick when a cell using the edge lies outside this one.
+  const int key[3] = {kx, ky, kz};
+  bool shared = false;
+  for (int ax = 0; ax < 3; ++ax) {
+    const bool on_side = key[ax] == 0 || key[ax] == brick_->cells[ax];
+    if ((slot < 3 && ax != slot) || (slot >= 3 && slot < 6 && ax == slot - 3)) shared |= on_side;
+  }
+  if (shared) out_->shared.emplace_back(edge_key(o[0] + kx, o[1] + ky, o[2] + kz, slot), id);
+  return id;
+}
+
+void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[8]) {
+  CellPolygons cp;
+  cell_polygons(g, cp);
+  out_->stats.ambiguous_faces += cp.ambiguous_lower_faces;
+  out_->stats.degenerate_saddles += cp.degenerate_lower_saddles;
+  for (int p = 0; p < cp.count; ++p) {
+    const CellPolygon& poly = cp.polygons[p];
+    int32_t ids[12];
+    for (int m = 0; m < poly.size; ++m) {
+      const std::array<int, 2> ec = cell::edge_corners(poly.edges[m]);
+      ids[m] = edge_vertex(i, j, k, ec[0], ec[1]);
+    }
+    std::vector<int32_t>& tri = out_->triangles;
+    if (poly.double_face < 0) {
+      // Theorem 3.4 (i): with at most one segment per face every
+      // triangulation keeps Condition 3.1; a fan is one.
+      add_fan(ids, poly.size);
+      continue;
+    }
+    // Theorem 3.5: fan from an extra point off the double face.
+    std::array<double, 3> uvw;
+    int32_t centre;
+    if (extra_point(g, poly, uvw)) {
+      Vec3d grad{0, 0, 0};
+      for (int c = 0; c < 8; ++c) {
+        const double wgt = ((c & 1) ? uvw[0] : 1 - uvw[0]) * (((c >> 1) & 1) ? uvw[1] : 1 - uvw[1]) *
+                           ((c >> 2) ? uvw[2] : 1 - uvw[2]);
+        const Vec3d& gc = gradient(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+        for (int a = 0; a < 3; ++a) grad[a] += wgt * gc[a];
+      }
+      const Index3& o = brick_->origin;
+      centre = add_vertex({o[0] + i + uvw[0], o[1] + j + uvw[1], o[2] + k + uvw[2]}, grad);
+      ++out_->stats.extra_points;
+    } else {
+      centre = add_centroid(ids, poly.size);
+      ++out_->stats.centroid_points;
+    }
+    for (int m = 0; m < poly.size; ++m)
+      tri.insert(tri.end(), {ids[m], ids[(m + 1) % poly.size], centre});
+  }
+}
+
+int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
+  // Remark 3.9: the centroid of the polygon's points, in world space (the
+  // affine map commutes with averaging), with their mean gradient.
+  double p[3] = {0, 0, 0}, q[3] = {0, 0, 0};
+  for (int m = 0; m < n; ++m)
+    for (int a = 0; a < 3; ++a) {
+      p[a] += out_->points[3 * size_t(ids[m]) + a] / n;
+      q[a] += out_->gradients[3 * size_t(ids[m]) + a] / n;
+    }
+  for (int a = 0; a < 3; ++a) {
+    out_->points.push_back(float(p[a]));
+    out_->gradients.push_back(float(q[a]));
+  }
+  return int32_t(out_->points.size() / 3 - 1);
+}
+
+double BrickContourer::triangle_area2(int32_t a, int32_t b, int32_t c) const {
+  const float* p = &out_->points[3 * size_t(a)];
+  const float* q = &out_->points[3 * size_t(b)];
+  const float* r = &out_->points[3 * size_t(c)];
+  const double u[3] = {double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2]};
+  const double w[3] = {double(r[0]) - p[0], double(r[1]) - p[1], double(r[2]) - p[2]};
+  const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+  return x * x + y * y + z * z;
+}
+
+void BrickContourer::add_fan(const int32_t* ids, int n) {
+  // NOTE: the apex whose smallest triangle is largest. Points on the edges
+  // of one cell can be collinear (integer data at half-integer levels put
+  // many at edge midpoints), and a fan from a fixed corner would then make
+  // zero-area triangles; among the n fans at least one avoids them.
+  int best = 0;
+  double best_area = -1;
+  for (int apex = 0; apex < n && n > 3; ++apex) {
+    double smallest = HUGE_VAL;
+    for (int m = 1; m + 1 < n; ++m)
+      smallest = std::min(smallest, triangle_area2(ids[apex], ids[(apex + m) % n], ids[(apex + m + 1) % n]));
+    if (smallest > best_area) {
+      best_area = smallest;
+      best = apex;
+    }
+  }
+  std::vector<int32_t>& tri = out_->triangles;
+  for (int m = 1; m + 1 < n; ++m) tri.insert(tri.end(), {ids[best], ids[(best + m) % n], ids[(best + m + 1) % n]});
+}
+
+void BrickContourer::contour_cell_tetra(int i, int j, int k, const double g[8]) {
+  for (int t = 0; t < 6; ++t) {
+    const std::array<int, 4>& tet = tetrahedra()[t];
+    int above = 0;
+    for (int m = 0; m < 4; ++m) above |= (g[tet[m]] > 0) << m;
+    const TetPolygon& poly = tet_polygon(t, above);
+    if (poly.size == 0) continue;
+    int32_t ids[4];
+    for (int m = 0; m < poly.size; ++m) ids[m] = edge_vertex(i, j, k, poly.edges[m][0], poly.edges[m][1]);
+    add_fan(ids, poly.size);
+  }
+}
+
+}  // namespace isoform

@@ -1,0 +1,64 @@
+// Contouring one brick: the cells whose lower corner lies in the brick become
+// triangles over a brick-local vertex table. Vertices on edges that cells of
+// other bricks also use carry a global key, so that merge.h can share them.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "../mesh.h"
+#include "../volume.h"
+
+namespace isoform {
+
+enum class ContourMethod { Cells = 0, Tetra = 1 };
+
+struct BrickMesh {
+  std::vector<float> points;        // 3 per vertex, world coordinates
+  std::vector<float> gradients;     // 3 per vertex, world space, not normalised
+  std::vector<int32_t> triangles;   // brick-local vertex indices
+  std::vector<std::pair<uint64_t, int32_t>> shared;  // (edge key, local vertex)
+  ContourStats stats;
+};
+
+// Per-thread scratch for contouring bricks of one grid at one level.
+class BrickContourer {
+ public:
+  BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method);
+  // Appends nothing and returns false when no cell of the brick crosses.
+  bool run(const Brick& brick, BrickMesh& out);
+
+ private:
+  void prepare(const Brick& brick);
+  bool crosses() const;
+  double moved(int i, int j, int k) const;
+  const Vec3d& gradient(int i, int j, int k);
+  int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
+  int32_t add_vertex(const Vec3d& index_pos, const Vec3d& grad);
+  int32_t add_centroid(const int32_t* ids, int n);
+  void add_fan(const int32_t* ids, int n);
+  double triangle_area2(int32_t a, int32_t b, int32_t c) const;
+  void contour_cell_trilinear(int i, int j, int k, const double g[8]);
+  void contour_cell_tetra(int i, int j, int k, const double g[8]);
+  bool gather(int i, int j, int k, double g[8]) const;
+
+  Affine xform_;
+  double iso_;
+  ContourMethod method_;
+  int slots_;
+  const Brick* brick_ = nullptr;
+  BrickMesh* out_ = nullptr;
+  Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
+  std::vector<double> g_;        // moved f - iso at the corner samples
+  std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily
+  std::vector<uint8_t> has_grad_;
+  std::vector<int32_t> slot_vertex_;  // per corner sample and slot: vertex or -1
+};
+
+// The global key of a vertex on the slot-th edge of sample (x, y, z):
+// slots 0-2 are the axis edges, 3-5 the face diagonals normal to each axis,
+// 6 the cell diagonal (tetra method). Throws Unsupported outside +-2^19.
+uint64_t edge_key(int x, int y, int z, int slot);
+
+}  // namespace isoform

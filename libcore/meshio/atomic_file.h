@@ -1,0 +1,42 @@
+// A file that appears at its path complete or not at all. Bytes go to a
+// temporary file beside the path (same directory, so the final rename stays
+// on one file system and is atomic); commit() flushes it to disk and renames
+// it over the path. Until then the path is untouched, and a destroyed,
+// uncommitted AtomicFile removes its temporary file.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace isoform::meshio {
+
+class AtomicFile {
+ public:
+  // Creates PATH.tmp-<random> in path's directory. Throws IoError.
+  explicit AtomicFile(const std::string& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  // Appends bytes (buffered). Throws IoError.
+  void write(const void* data, size_t size);
+  void write(std::string_view text) { write(text.data(), text.size()); }
+
+  // Flushes, fsyncs, closes and renames the temporary file over the path.
+  // Throws IoError; the destructor then removes the temporary file.
+  void commit();
+
+ private:
+  void flush();
+  [[noreturn]] void fail(const std::string& action, int error) const;
+
+  std::string path_;
+  std::string temp_path_;
+  int fd_ = -1;
+  bool committed_ = false;
+  std::vector<unsigned char> buffer_;
+};
+
+}  // namespace isoform::meshio

@@ -1,0 +1,93 @@
+// save_mesh and load_mesh: the checks made once at entry, and the choice of
+// format by extension.
+#include "meshio.h"
+
+#include <cstdint>
+#include <filesystem>
+
+#include "../errors.h"
+#include "atomic_file.h"
+#include "file_bytes.h"
+#include "formats.h"
+
+namespace isoform {
+namespace {
+
+enum class Format { ply, obj, stl };
+
+Format format_of(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  if (extension == ".ply") return Format::ply;
+  if (extension == ".obj") return Format::obj;
+  if (extension == ".stl") return Format::stl;
+  throw InvalidArgument(path + ": unknown mesh file extension \"" + extension +
+                        "\" (use .ply, .obj or .stl)");
+}
+
+// The writers trust these, so a bad mesh fails here rather than as a file
+// with dangling indices.
+void check_sizes(const Mesh& mesh, const std::string& path) {
+  auto refuse = [&](const std::string& what) {
+    throw InvalidArgument("cannot save " + path + ": " + what);
+  };
+  if (mesh.points.size() % 3 != 0) refuse("the points are not whole triples");
+  if (mesh.triangles.size() % 3 != 0) refuse("the triangles are not whole triples");
+  if (!mesh.normals.empty() && mesh.normals.size() != mesh.points.size()) {
+    refuse("there are " + std::to_string(mesh.normals.size() / 3) + " normals for " +
+           std::to_string(mesh.vertex_count()) + " vertices");
+  }
+  if (!mesh.parts.empty() && mesh.parts.size() != mesh.triangle_count()) {
+    refuse("there are " + std::to_string(mesh.parts.size()) + " parts for " +
+           std::to_string(mesh.triangle_count()) + " triangles");
+  }
+}
+
+void check_indices(const Mesh& mesh, const std::string& path) {
+  const size_t vertices = mesh.vertex_count();
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    int32_t vertex = mesh.triangles[i];
+    if (vertex < 0 || size_t(vertex) >= vertices) {
+      throw InvalidArgument("cannot save " + path + ": triangle " + std::to_string(i / 3) +
+                            " refers to vertex " + std::to_string(vertex) + " but there are " +
+                            std::to_string(vertices) + " vertices");
+    }
+  }
+}
+
+// Binary STL counts triangles in 32 bits.
+void check_format_limits(const Mesh& mesh, Format format, const std::string& path) {
+  if (format == Format::stl && mesh.triangle_count() > UINT32_MAX) {
+    throw InvalidArgument("cannot save " + path + ": " + std::to_string(mesh.triangle_count()) +
+                          " triangles are more than STL can count");
+  }
+}
+
+}  // namespace
+
+void save_mesh(const Mesh& mesh, const std::string& path) {
+  Format format = format_of(path);
+  check_sizes(mesh, path);
+  check_indices(mesh, path);
+  check_format_limits(mesh, format, path);
+  meshio::AtomicFile file(path);
+  switch (format) {
+    case Format::ply: meshio::write_ply(mesh, file); break;
+    case Format::obj: meshio::write_obj(mesh, file); break;
+    case Format::stl: meshio::write_stl(mesh, file); break;
+  }
+  file.commit();
+}
+
+Mesh load_mesh(const std::string& path) {
+  Format format = format_of(path);
+  std::string bytes = meshio::read_file_bytes(path);
+  switch (format) {
+    case Format::ply: return meshio::read_ply(bytes, path);
+    case Format::obj: return meshio::read_obj(bytes, path);
+    case Format::stl: return meshio::read_stl(bytes, path);
+  }
+  return Mesh();
+}
+
+}  // namespace isoform

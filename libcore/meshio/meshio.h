@@ -1,0 +1,44 @@
+// Mesh files: PLY, OBJ and STL, read and written by isoform's own small
+// layer rather than OpenMesh's IO. Two reasons decided it: the PLY output must
+// carry a per-face `part` int beside the vertex normals, and a save must be
+// atomic under our control (temporary file, fsync, rename), which OpenMesh's
+// writers, opening the target path themselves, cannot give.
+#pragma once
+
+#include <string>
+
+#include "../mesh.h"
+
+namespace isoform {
+
+// Writes mesh to path in the format named by its extension (.ply, .obj, .stl;
+// case-insensitive):
+// - PLY: binary little endian; float x y z (and nx ny nz when mesh.normals is
+//   not empty) per vertex; uchar/int vertex_indices (and int part when
+//   mesh.parts is not empty) per face.
+// - OBJ: v, vn (when normals exist) and 1-based f lines; parts are not kept.
+// - STL: binary, one facet normal computed from each triangle; vertex normals
+//   and parts are not kept.
+// The save is atomic: the data go to PATH.tmp-<random> in the same directory,
+// which is flushed to disk and renamed over path. On any failure the temporary
+// file is removed and an existing path is left untouched.
+// Throws InvalidArgument for an unknown extension or an inconsistent mesh
+// (array sizes, indices out of range), IoError when writing fails.
+void save_mesh(const Mesh& mesh, const std::string& path);
+
+// Reads the mesh at path, choosing the format by extension as save_mesh does.
+// Returns points and triangles, and normals when the file gives one per
+// vertex (else normals stay empty); a PLY face property `part`, as save_mesh
+// writes it, fills parts and part_count. Neighbours, parts of other files and
+// statistics are not computed.
+// - PLY: ascii, binary little or big endian; any scalar types; other elements
+//   and properties are skipped. Polygons are split into triangle fans.
+// - OBJ: v, vn, f (a, a/b, a/b/c, a//c, negative indices); polygons fanned.
+//   Normals are kept only when every vertex has exactly one.
+// - STL: binary or ascii; exactly equal corners are welded into one vertex.
+// Throws InvalidArgument for an unknown extension, IoError when the file
+// cannot be read, FormatError (naming the file and the place) when its
+// content is malformed, truncated or not finite.
+Mesh load_mesh(const std::string& path);
+
+}  // namespace isoform

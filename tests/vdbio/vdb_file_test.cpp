@@ -1,0 +1,275 @@
+// OpenVDB files as VolumeFiles: facts, loading, transforms and every way a
+// file can be wrong.
+#include "vdbio/vdb_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "libcore/errors.h"
+#include "test_support.h"
+#include "vdbio/leaf_bricks.h"
+#include "vdbio/vdb_convert.h"
+
+namespace isoform::vdbio {
+namespace {
+
+using test::data_file;
+using test::error_of;
+using test::TempDir;
+using test::write_grids;
+
+const VdbFile& as_vdb(const std::shared_ptr<VolumeFile>& file) {
+  return dynamic_cast<const VdbFile&>(*file);
+}
+
+// Affine and OpenVDB's transform agree on a few index points.
+void expect_same_map(const Affine& affine, const openvdb::math::Transform& transform) {
+  for (const openvdb::Vec3d p :
+       {openvdb::Vec3d(0, 0, 0), openvdb::Vec3d(3, -7, 11), openvdb::Vec3d(-40, 25, 60)}) {
+    const openvdb::Vec3d expected = transform.indexToWorld(p);
+    const Vec3d got = affine.apply({p.x(), p.y(), p.z()});
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], expected[a], 1e-9) << "axis " << a;
+  }
+}
+
+TEST(VdbFileRealData, SphereFacts) {
+  const auto file = open_vdb(data_file("sphere.vdb"));
+  ASSERT_EQ(file->grid_count(), 1);
+  const GridFacts f = file->facts(0);
+  EXPECT_EQ(f.name, "ls_sphere");
+  EXPECT_EQ(f.value_type, "half");
+  EXPECT_EQ(f.grid_class, GridClass::LevelSet);
+  EXPECT_TRUE(f.is_scalar);
+  EXPECT_EQ(f.active_voxels, 270638);
+  EXPECT_EQ(f.bbox_min, (Index3{-62, -62, -62}));
+  EXPECT_EQ(f.bbox_max, (Index3{62, 62, 62}));
+  EXPECT_NEAR(f.background, 0.15, 1e-4);
+  EXPECT_LT(f.value_min, 0.0);
+  EXPECT_GT(f.value_max, 0.0);
+  EXPECT_GE(f.value_min, -f.background - 1e-6);
+  EXPECT_LE(f.value_max, f.background + 1e-6);
+  // Voxel size 0.05 along each axis (stored as a 32-bit float), no translation.
+  const Vec3d size = f.index_to_world.voxel_size();
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(size[a], 0.05, 1e-8);
+  const Vec3d p = f.index_to_world.apply({20, -10, 4});
+  EXPECT_NEAR(p[0], 1.0, 1e-7);
+  EXPECT_NEAR(p[1], -0.5, 1e-7);
+  EXPECT_NEAR(p[2], 0.2, 1e-7);
+}
+
+TEST(VdbFileRealData, SmokeTransformHasTranslation) {
+  const auto file = open_vdb(data_file("smoke.vdb"));
+  const GridFacts f = file->facts(0);
+  EXPECT_EQ(f.grid_class, GridClass::Fog);
+  EXPECT_EQ(f.active_voxels, 1049275);
+  EXPECT_EQ(f.background, 0.0);
+  EXPECT_GT(f.value_min, 0.0);
+  EXPECT_NEAR(f.value_max, 5.71, 0.01);
+  EXPECT_EQ(f.bbox_min, (Index3{1, 2, 1}));
+  EXPECT_EQ(f.bbox_max, (Index3{111, 223, 112}));
+  EXPECT_NEAR(f.index_to_world.m[0][3], -34.0476, 1e-4);
+  expect_same_map(f.index_to_world, as_vdb(file).read_grid(0)->transform());
+}
+
+TEST(VdbFileRealData, LoadSphere) {
+  const auto file = open_vdb(data_file("sphere.vdb"));
+  const auto grid = file->load(0);
+  EXPECT_EQ(grid->name, "ls_sphere");
+  EXPECT_EQ(grid->grid_class, GridClass::LevelSet);
+  EXPECT_NEAR(grid->background, 0.15, 1e-4);
+  const GridFacts f = file->facts(0);
+  EXPECT_EQ(grid->value_min, f.value_min);
+  EXPECT_EQ(grid->value_max, f.value_max);
+  const auto* bricks = dynamic_cast<const LeafBricks*>(grid->bricks.get());
+  ASSERT_NE(bricks, nullptr);
+  EXPECT_GT(bricks->brick_count(), bricks->grid()->tree().leafCount());
+}
+
+// A rotation, non-uniform scale and translation: a transposed matrix or a
+// translation from the wrong row would show.
+TEST(VdbConvert, AffineFollowsOpenVdbRowVectors) {
+  openvdb::Mat4d m = openvdb::Mat4d::identity();
+  m.preScale(openvdb::Vec3d(0.5, 2.0, 1.5));
+  m.postRotate(openvdb::math::Z_AXIS, 0.3);
+  m.postRotate(openvdb::math::X_AXIS, -0.7);
+  m.postTranslate(openvdb::Vec3d(4.0, -2.0, 9.0));
+  const auto transform = openvdb::math::Transform::createLinearTransform(m);
+  const Affine affine = to_affine(*transform, "test");
+  expect_same_map(affine, *transform);
+  expect_same_map(affine, *to_transform(affine));
+}
+
+TEST(VdbFile, MissingFile) {
+  TempDir dir;
+  const std::string path = dir.file("nothing.vdb");
+  EXPECT_EQ(error_of<IoError>([&] { open_vdb(path); }), path + ": no such file");
+}
+
+TEST(VdbFile, NotAVdbFile) {
+  TempDir dir;
+  const std::string path = dir.file("text.vdb");
+  std::ofstream(path) << "this is not a volume\n";
+  EXPECT_EQ(error_of<FormatError>([&] { open_vdb(path); }), path + ": not an OpenVDB file");
+}
+
+// The first 60% of a file: OpenVDB itself would read it without complaint.
+void copy_prefix(const std::string& from, const std::string& to, double fraction) {
+  std::filesystem::copy_file(from, to);
+  std::filesystem::resize_file(to,
+                               std::uintmax_t(fraction * double(std::filesystem::file_size(to))));
+}
+
+TEST(VdbFileRealData, TruncatedAtOpen) {
+  TempDir dir;
+  const std::string path = dir.file("sphere60.vdb");
+  copy_prefix(data_file("sphere.vdb"), path, 0.6);
+  const std::string message = error_of<FormatError>([&] { open_vdb(path); });
+  EXPECT_EQ(message.rfind(path + ": truncated or damaged OpenVDB file (", 0), 0u) << message;
+}
+
+TEST(VdbFileRealData, TruncatedAfterOpenFailsAtLoad) {
+  TempDir dir;
+  const std::string path = dir.file("sphere.vdb");
+  std::filesystem::copy_file(data_file("sphere.vdb"), path);
+  const auto file = open_vdb(path);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) * 6 / 10);
+  const std::string message = error_of<FormatError>([&] { file->load(0); });
+  EXPECT_EQ(message.rfind(path + ": truncated or damaged OpenVDB file (", 0), 0u) << message;
+}
+
+TEST(VdbFile, CutInsideTheHeader) {
+  TempDir dir;
+  const std::string path = dir.file("short.vdb");
+  copy_prefix(data_file("sphere.vdb"), path, 100.0 / 829636.0);
+  EXPECT_NE(error_of<FormatError>([&] { open_vdb(path); }).find("truncated"), std::string::npos);
+}
+
+openvdb::FloatGrid::Ptr float_grid(const std::string& name, float background) {
+  auto grid = openvdb::FloatGrid::create(background);
+  grid->setName(name);
+  return grid;
+}
+
+TEST(VdbFile, VectorGridIsUnsupported) {
+  TempDir dir;
+  const std::string path = dir.file("vel.vdb");
+  auto vel = openvdb::Vec3SGrid::create();
+  vel->setName("vel");
+  vel->tree().setValue(openvdb::Coord(1, 2, 3), openvdb::Vec3s(1, 0, 0));
+  write_grids(path, {vel});
+  const auto file = open_vdb(path);
+  const GridFacts f = file->facts(0);
+  EXPECT_EQ(f.value_type, "vec3s");
+  EXPECT_FALSE(f.is_scalar);
+  EXPECT_EQ(f.active_voxels, 1);
+  EXPECT_EQ(error_of<Unsupported>([&] { file->load(0); }),
+            path + ": grid 'vel' is a vec3s grid; isoform contours scalar grids only");
+}
+
+TEST(VdbFile, EmptyGrid) {
+  TempDir dir;
+  const std::string path = dir.file("empty.vdb");
+  write_grids(path, {float_grid("x", 1.0f)});
+  const auto file = open_vdb(path);
+  EXPECT_EQ(file->facts(0).active_voxels, 0);
+  EXPECT_EQ(error_of<FormatError>([&] { file->load(0); }),
+            path + ": grid 'x' is empty (no active voxels)");
+}
+
+TEST(VdbFile, NanIsRefusedWithItsVoxel) {
+  TempDir dir;
+  const std::string path = dir.file("nan.vdb");
+  auto grid = float_grid("bad", 0.0f);
+  grid->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+  grid->tree().setValue(openvdb::Coord(5, -6, 7), std::numeric_limits<float>::quiet_NaN());
+  write_grids(path, {grid});
+  const auto file = open_vdb(path);
+  EXPECT_EQ(error_of<FormatError>([&] { file->load(0); }),
+            path + ": grid 'bad' has a NaN value at voxel (5, -6, 7); isoform needs finite values");
+}
+
+TEST(VdbFile, IntegerAndDoubleGridsLoadAsFloat) {
+  TempDir dir;
+  const std::string path = dir.file("types.vdb");
+  auto ints = openvdb::Int32Grid::create(0);
+  ints->setName("labels");
+  ints->tree().setValue(openvdb::Coord(1, 1, 1), 7);
+  ints->tree().setValue(openvdb::Coord(2, 1, 1), -3);
+  auto doubles = openvdb::DoubleGrid::create(0.5);
+  doubles->setName("field");
+  doubles->tree().setValue(openvdb::Coord(-9, 4, 0), 2.25);
+  write_grids(path, {ints, doubles});
+  const auto file = open_vdb(path);
+  ASSERT_EQ(file->grid_count(), 2);
+  EXPECT_EQ(file->facts(0).value_type, "int32");
+  EXPECT_EQ(file->facts(0).value_min, -3.0);
+  EXPECT_EQ(file->facts(0).value_max, 7.0);
+  EXPECT_EQ(file->facts(1).value_type, "double");
+  const auto field = file->load(1);
+  EXPECT_EQ(field->background, 0.5);
+  EXPECT_EQ(field->value_min, 2.25);
+  const auto* bricks = dynamic_cast<const LeafBricks*>(field->bricks.get());
+  ASSERT_NE(bricks, nullptr);
+  EXPECT_EQ(bricks->grid()->tree().getValue(openvdb::Coord(-9, 4, 0)), 2.25f);
+}
+
+TEST(VdbFile, ActiveTilesCountInFacts) {
+  TempDir dir;
+  const std::string path = dir.file("tile.vdb");
+  auto grid = float_grid("fog", 0.0f);
+  grid->tree().addTile(1, openvdb::Coord(0, 0, 0), 2.0f, true);  // one 8^3 tile
+  grid->tree().setValue(openvdb::Coord(20, 0, 0), 0.5f);
+  write_grids(path, {grid});
+  const GridFacts f = open_vdb(path)->facts(0);
+  EXPECT_EQ(f.active_voxels, 513);
+  EXPECT_EQ(f.value_min, 0.5);
+  EXPECT_EQ(f.value_max, 2.0);
+  EXPECT_EQ(f.bbox_max, (Index3{20, 7, 7}));
+}
+
+TEST(VdbFile, FrustumIsUnsupported) {
+  TempDir dir;
+  const std::string path = dir.file("frustum.vdb");
+  auto grid = float_grid("cone", 0.0f);
+  grid->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
+  grid->setTransform(openvdb::math::Transform::createFrustumTransform(
+      openvdb::BBoxd(openvdb::Vec3d(0), openvdb::Vec3d(10)), 0.5, 2.0));
+  write_grids(path, {grid});
+  const auto file = open_vdb(path);
+  const std::string message = error_of<Unsupported>([&] { file->load(0); });
+  EXPECT_EQ(message.rfind(path + ": grid 'cone' has a", 0), 0u) << message;
+  EXPECT_NE(message.find("affine"), std::string::npos);
+}
+
+TEST(VdbFile, GridsOfTheSameNameAreKeptApart) {
+  TempDir dir;
+  const std::string path = dir.file("twins.vdb");
+  auto first = float_grid("density", 0.0f);
+  first->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+  auto second = float_grid("density", 0.0f);
+  second->tree().setValue(openvdb::Coord(0, 0, 0), 2.0f);
+  write_grids(path, {first, second});
+  const auto file = open_vdb(path);
+  ASSERT_EQ(file->grid_count(), 2);
+  EXPECT_EQ(file->facts(0).value_max, 1.0);
+  EXPECT_EQ(file->facts(1).value_max, 2.0);
+  EXPECT_EQ(file->load(1)->name, "density");
+}
+
+TEST(VdbFile, GridIndexOutOfRange) {
+  TempDir dir;
+  const std::string path = dir.file("one.vdb");
+  auto grid = float_grid("a", 0.0f);
+  grid->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+  write_grids(path, {grid});
+  const auto file = open_vdb(path);
+  EXPECT_THROW(file->load(1), InvalidArgument);
+  EXPECT_THROW(file->facts(-1), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace isoform::vdbio

@@ -1,0 +1,42 @@
+// Checks on an input file before a format reader sees it.
+#include "input_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "libcore/errors.h"
+
+namespace isoform::vdbio {
+
+namespace fs = std::filesystem;
+
+void require_input_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) throw IoError(path + ": no such file");
+  if (!fs::is_regular_file(status)) throw IoError(path + ": not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot be read (" + std::strerror(errno) + ")");
+}
+
+std::uintmax_t input_file_size(const std::string& path) {
+  require_input_file(path);
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw IoError(path + ": cannot get its size (" + ec.message() + ")");
+  return size;
+}
+
+std::string read_prefix(const std::string& path, size_t n) {
+  require_input_file(path);
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(n, '\0');
+  in.read(bytes.data(), std::streamsize(n));
+  if (in.bad()) throw IoError(path + ": cannot be read");
+  bytes.resize(size_t(in.gcount()));
+  return bytes;
+}
+
+}  // namespace isoform::vdbio

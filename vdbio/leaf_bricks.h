@@ -1,0 +1,44 @@
+// Bricks over an OpenVDB float tree, one per 8^3 block of cells that can
+// hold a crossing. Every brick is aligned to the leaf grid (origin a
+// multiple of 8, cells {8, 8, 8}) and every sample is defined: values off
+// the leaves come from tiles and the background, so a sparse grid's contour
+// closes wherever it leaves the active region.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include <vector>
+
+#include "libcore/volume.h"
+
+namespace isoform::vdbio {
+
+class LeafBricks : public BrickSource {
+ public:
+  // Keeps the grid alive and finds the candidate blocks once:
+  // - every leaf node, and the 7 blocks at offsets {0,-8}^3 below it, whose
+  //   cells reach into the leaf with their upper corners;
+  // - for every active tile (any level), the blocks holding cells that have
+  //   corners both inside and outside it: a fog volume's constant interior
+  //   is an active tile whose boundary must still be contoured. Inactive
+  //   tiles add nothing; in a valid grid leaves separate them from values
+  //   on the other side of the isovalue.
+  explicit LeafBricks(openvdb::FloatGrid::ConstPtr grid);
+
+  size_t brick_count() const override { return origins_.size(); }
+  // Thread-safe: each call reads the tree through its own accessor. It
+  // probes the 27 blocks around the brick once and copies from leaf buffers;
+  // a block without a leaf lies in one tile or the background, so one value
+  // stands for all of it.
+  void fill(size_t index, Brick& out) const override;
+
+  const openvdb::FloatGrid::ConstPtr& grid() const { return grid_; }
+  // Brick origins (the first cell of each), sorted and unique.
+  const std::vector<openvdb::Coord>& origins() const { return origins_; }
+
+ private:
+  openvdb::FloatGrid::ConstPtr grid_;
+  std::vector<openvdb::Coord> origins_;
+};
+
+}  // namespace isoform::vdbio

@@ -1,0 +1,64 @@
+// An OpenVDB file as a VolumeFile.
+#pragma once
+
+#include <openvdb/version.h>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libcore/volume.h"
+
+// Declared rather than included: the C API sources include this header,
+// and OpenVDB's headers would put default-visibility symbols into them.
+namespace openvdb {
+OPENVDB_USE_VERSION_NAMESPACE
+namespace OPENVDB_VERSION_NAME {
+class GridBase;
+}
+}  // namespace openvdb
+
+namespace isoform::vdbio {
+
+// Opening checks the file's layout (see vdb_layout.h) and reads every grid's
+// metadata; voxel data are read when a grid is described or loaded, each
+// time through a fresh io::File, so calls may run on several threads at
+// once. Only the (small) facts are kept; loaded grids are the caller's to
+// keep (the C API handle does).
+class VdbFile : public VolumeFile {
+ public:
+  explicit VdbFile(std::string path);
+
+  std::string path() const override { return path_; }
+  int grid_count() const override { return int(grids_.size()); }
+  // Value range and background are given for scalar grids only (0 for
+  // vector, bool and mask grids); active count and bounding box for all.
+  GridFacts facts(int i) const override;
+  // Float, double, int32 and int64 grids, converted to float. Throws
+  // Unsupported for other value types, FormatError for a grid without active
+  // voxels or with a NaN or infinite value (active or not: the bricks see
+  // every stored value).
+  std::shared_ptr<const ScalarGrid> load(int i) const override;
+
+  // Grid i as stored (any value type), its tree read in full; for writers
+  // that copy grids as they are.
+  std::shared_ptr<openvdb::GridBase> read_grid(int i) const;
+
+ private:
+  std::string describe(int i) const;  // "PATH: grid 'NAME'" for messages
+
+  std::string path_;
+  std::vector<std::string> names_;                               // as io::File::readGrid takes them
+  std::vector<std::shared_ptr<const openvdb::GridBase>> grids_;  // metadata and transform only
+  mutable std::mutex mutex_;
+  mutable std::vector<std::optional<GridFacts>> facts_;
+};
+
+// Throws IoError (missing, unreadable), FormatError (not a VDB, truncated or
+// damaged) or Unsupported (a grid type or file version OpenVDB cannot read),
+// each naming the file.
+std::shared_ptr<VolumeFile> open_vdb(const std::string& path);
+
+}  // namespace isoform::vdbio
