@@ -153,10 +153,11 @@ ISOFORM_API isoform_status isoform_volume_from_dense(const float* values, int nx
  * the usual size), voxel size 2/(n-1) world units, spanning [-1, 1]^3. */
 ISOFORM_API isoform_status isoform_volume_phantom(int n, isoform_volume** out);
 
-/* Writes every grid of the volume to an OpenVDB file (float grids, values
- * equal to the background inactive, grid class and transform kept). Written
- * to a temporary file and renamed; refuses to overwrite the volume's own
- * source file. */
+/* Writes every grid of the volume to an OpenVDB file: scalar grids as float
+ * grids (from a dense array, samples equal to the background 0 stay
+ * inactive, so scans become sparse), other grids of a VDB input unchanged;
+ * names, classes and transforms kept. Written to a temporary file and
+ * renamed; refuses to overwrite the volume's own source file. */
 ISOFORM_API isoform_status isoform_volume_save_vdb(const isoform_volume* volume, const char* path);
 
 ISOFORM_API void isoform_volume_free(isoform_volume* volume);
