@@ -101,12 +101,10 @@ Json measure_in_child(const std::string& method, const Case& c, bool raw, int re
   args.insert(args.end(), {"--reps", std::to_string(reps)});
   if (raw) {
     const RawLayout& r = *c.raw;
-    for (const std::string& a : {std::string("--raw"), r.path, std::string("--dims"), joined(r.dims),
-                                 std::string("--type"), r.type, std::string("--spacing"), joined(r.spacing)})
-      args.push_back(a);
+    args.insert(args.end(), {"--raw", r.path, "--dims", joined(r.dims), "--type", r.type, "--spacing",
+                             joined(r.spacing)});
   } else {
-    args.push_back("--vdb");
-    args.push_back(c.vdb);
+    args.insert(args.end(), {"--vdb", c.vdb});
   }
   std::cerr << "isoform_bench: " << c.name << ": " << method << " ..." << std::flush;
   const double load_before = load_average();
