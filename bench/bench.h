@@ -57,6 +57,10 @@ struct Request {
 // unless status is ISOFORM_OK.
 void check(isoform_status status, const std::string& what);
 
+// Opens a raw scan through isoform's C API (isoform_volume_open_raw); the
+// caller frees the volume.
+isoform_volume* open_raw_volume(const RawLayout& layout);
+
 // The process's peak resident set (VmHWM) in kilobytes. Read in the child
 // itself: on Linux a fork+exec child's ru_maxrss also counts the parent's
 // resident pages at fork time, so getrusage in the parent would overstate it.

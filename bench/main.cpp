@@ -20,7 +20,7 @@ int finish(const std::string& path, const Json& result, int code) {
 }
 
 template <class Body>
-int run_child(const std::string& result_path, Body&& body) {
+int run_as_child(const std::string& result_path, Body&& body) {
   try {
     return finish(result_path, body(), 0);
   } catch (const std::exception& e) {
@@ -32,8 +32,10 @@ void add_input_options(CLI::App& app, isoform_bench::PrepareOptions& p) {
   app.add_option("--sphere-radius", p.sphere_radius,
                  "Radius in voxels of the generated level-set sphere (half width 3)")
       ->capture_default_str();
-  app.add_flag("--no-sphere{false}", p.sphere, "Leave out the large level-set sphere");
-  app.add_flag("--no-resample{false}", p.resample, "Leave out the resampled headsq");
+  app.add_flag_callback(
+      "--no-sphere", [&p] { p.sphere = false; }, "Leave out the large level-set sphere");
+  app.add_flag_callback(
+      "--no-resample", [&p] { p.resample = false; }, "Leave out the resampled headsq");
 }
 
 }  // namespace
@@ -87,14 +89,14 @@ int main(int argc, char** argv) {
 
   if (run_cmd->parsed()) return isoform_bench::run_all(run);
   if (prepare_cmd->parsed())
-    return run_child(result_path, [&] { return isoform_bench::prepare_inputs(prepare); });
+    return run_as_child(result_path, [&] { return isoform_bench::prepare_inputs(prepare); });
 
   for (size_t a = 0; a < dims.size() && a < 3; ++a) request.raw.dims[a] = dims[a];
   for (size_t a = 0; a < spacing.size() && a < 3; ++a) request.raw.spacing[a] = spacing[a];
   // Every method gets the same two worker threads (isoform also asks for
   // them through isoform_contour_options.threads).
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, isoform_bench::kThreads);
-  return run_child(result_path, [&]() -> Json {
+  return run_as_child(result_path, [&]() -> Json {
     const std::string& m = request.method;
     if (m == "isoform" || m == "isoform-raw") return isoform_bench::measure_isoform(request);
     if (m == "volume-to-mesh") return isoform_bench::measure_volume_to_mesh(request);

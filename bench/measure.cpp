@@ -23,6 +23,19 @@ void check(isoform_status status, const std::string& what) {
     throw std::runtime_error(what + ": " + isoform_status_name(status) + ": " + isoform_last_error());
 }
 
+isoform_volume* open_raw_volume(const RawLayout& layout) {
+  isoform_raw_options options;
+  isoform_raw_options_default(&options);
+  for (int a = 0; a < 3; ++a) {
+    options.dims[a] = layout.dims[a];
+    options.spacing[a] = layout.spacing[a];
+  }
+  options.scalar_type = layout.type == "u16" ? ISOFORM_U16 : ISOFORM_F32;
+  isoform_volume* volume = nullptr;
+  check(isoform_volume_open_raw(layout.path.c_str(), &options, &volume), "isoform_volume_open_raw");
+  return volume;
+}
+
 long long peak_rss_kb() {
   std::ifstream status("/proc/self/status");
   std::string line;
@@ -60,19 +73,9 @@ std::vector<char> read_raw_file(const RawLayout& layout) {
 namespace {
 
 isoform_volume* open_isoform(const Request& request) {
+  if (request.method == "isoform-raw") return open_raw_volume(request.raw);
   isoform_volume* volume = nullptr;
-  if (request.method == "isoform") {
-    check(isoform_volume_open(request.vdb.c_str(), &volume), "isoform_volume_open");
-    return volume;
-  }
-  isoform_raw_options options;
-  isoform_raw_options_default(&options);
-  for (int a = 0; a < 3; ++a) {
-    options.dims[a] = request.raw.dims[a];
-    options.spacing[a] = request.raw.spacing[a];
-  }
-  options.scalar_type = request.raw.type == "u16" ? ISOFORM_U16 : ISOFORM_F32;
-  check(isoform_volume_open_raw(request.raw.path.c_str(), &options, &volume), "isoform_volume_open_raw");
+  check(isoform_volume_open(request.vdb.c_str(), &volume), "isoform_volume_open");
   return volume;
 }
 
