@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "contouring.h"
+#include "curvature_step.h"
 #include "paths.h"
 #include "report.h"
 
@@ -18,6 +19,8 @@ struct ContourArgs {
   std::string output;
   std::string grid;  // "" = the first scalar grid
   ContourSettings settings;
+  bool curvature = false;
+  CurvatureSettings curvature_settings;
   bool json = false;
 };
 
@@ -32,21 +35,28 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
                         {"contour_seconds", result.seconds},
                         {"write_seconds", write_seconds}};
     j.update(mesh_json(result.stats));
+    if (args.curvature) j["curvature"] = curvature_json(result.mesh.get());
     print_json(j);
     return;
   }
   std::cout << args.input << ", grid '" << info.name << "' (" << class_name(info.grid_class)
             << "), method " << args.settings.method << '\n';
   print_mesh(std::cout, result.stats);
+  if (args.curvature) print_curvature(std::cout, result.mesh.get());
   print_row(std::cout, "time", format_seconds(result.seconds));
   std::cout << "wrote " << args.output << '\n';
 }
 
 void run_contour(const ContourArgs& args) {
-  check_output_path(args.input, args.output, {".ply", ".obj", ".stl"});
+  if (args.curvature)
+    check_output_path(args.input, args.output, {".ply"});  // only PLY carries curvature
+  else
+    check_output_path(args.input, args.output, {".ply", ".obj", ".stl"});
   const VolumePtr volume = open_volume(args.input);
   const int grid = find_grid(volume.get(), args.grid);
   const ContourResult result = contour_grid(args.input, volume.get(), grid, args.settings);
+  if (args.curvature)
+    compute_curvature(result.mesh.get(), args.curvature_settings, args.settings.threads, args.settings.progress);
   const double write_seconds = save_mesh(result.mesh.get(), args.output);
   report_contour(args, grid_info(volume.get(), grid), result, write_seconds);
 }
@@ -69,6 +79,10 @@ Command add_contour_command(CLI::App& parent) {
   add_contour_options(*app, args->settings,
                       "Isovalue, in the grid's value units (default: 0 for a level set, the "
                       "midpoint of the value range for other grids)");
+  app->add_flag("--curvature", args->curvature,
+                "Also compute principal curvatures (as `isoform curvature`) from the volume's normals; "
+                "needs a .ply output");
+  add_curvature_options(*app, args->curvature_settings, "--curvature-method");
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args] { run_contour(*args); }};
 }

@@ -79,7 +79,8 @@ typedef enum isoform_stage {
   ISOFORM_STAGE_CONTOUR = 2,  /* cells to triangles */
   ISOFORM_STAGE_MERGE = 3,    /* shared vertices, triangle table */
   ISOFORM_STAGE_TOPOLOGY = 4, /* neighbours, parts */
-  ISOFORM_STAGE_DONE = 5
+  ISOFORM_STAGE_DONE = 5,
+  ISOFORM_STAGE_CURVATURE = 6 /* fitting each vertex's platelet */
 } isoform_stage;
 
 /* ------------------------------------------------------------------ */
@@ -264,13 +265,109 @@ ISOFORM_API isoform_status isoform_mesh_from_arrays(const float* points, size_t 
  * otherwise estimated as in isoform_mesh_from_arrays. */
 ISOFORM_API isoform_status isoform_mesh_load(const char* path, isoform_mesh** out);
 
-/* Writes binary PLY (x y z nx ny nz per vertex; vertex_indices and part per
- * face), OBJ (v, vn, f) or binary STL, chosen by the extension of path.
+/* Writes binary PLY (x y z nx ny nz per vertex, then k1 k2 mean gauss
+ * absolute d1x d1y d1z d2x d2y d2z curvature_flags when the mesh has
+ * curvature, red green blue alpha when it has colours; vertex_indices and
+ * part per face), OBJ (v, vn, f) or binary STL, chosen by the extension of path.
  * Written to a temporary file beside path and renamed, so a failure never
  * leaves half a file. */
 ISOFORM_API isoform_status isoform_mesh_save(const isoform_mesh* mesh, const char* path);
 
 ISOFORM_API void isoform_mesh_free(isoform_mesh* mesh);
+
+/* ------------------------------------------------------------------ */
+/* Curvature of surfaces (Chapter 4, Section 4.2)                     */
+/* ------------------------------------------------------------------ */
+
+/* How each vertex's platelet is fitted by a height field over the tangent
+ * plane of its normal. The seed's fit trusts the normal; the others add
+ * linear terms, which absorb normal error, and higher orders. */
+typedef enum isoform_curvature_method {
+  ISOFORM_CURVATURE_SEED = 0,    /* (4.28): 3 quadratic terms, one-ring, as printed */
+  ISOFORM_CURVATURE_QUADRIC = 1, /* linear + quadratic terms, one-ring */
+  ISOFORM_CURVATURE_CUBIC = 2,   /* up to cubic, two-ring */
+  ISOFORM_CURVATURE_QUARTIC = 3  /* up to quartic, three-ring (default: the most accurate
+                                    measured, docs/curvature-surface.md) */
+} isoform_curvature_method;
+
+/* Per-vertex quantities. Sign: positive where the surface bends away from
+ * its normal (a sphere with outward normals has k1 = k2 = 1/r); k1 >= k2;
+ * units 1/world unit (K: 1/world unit^2). */
+typedef enum isoform_curvature_quantity {
+  ISOFORM_CURVATURE_K1 = 0,
+  ISOFORM_CURVATURE_K2 = 1,
+  ISOFORM_CURVATURE_MEAN = 2,     /* H = (k1 + k2) / 2 */
+  ISOFORM_CURVATURE_GAUSS = 3,    /* K = k1 k2 */
+  ISOFORM_CURVATURE_ABSOLUTE = 4, /* |k1| + |k2| */
+  ISOFORM_CURVATURE_DIR1 = 5,     /* unit direction of k1: 3 floats per vertex */
+  ISOFORM_CURVATURE_DIR2 = 6      /* unit direction of k2: 3 floats per vertex */
+} isoform_curvature_quantity;
+
+/* Bits of the per-vertex curvature flags: what the fit had to do. */
+#define ISOFORM_CURVATURE_FLAG_BOUNDARY 1       /* boundary vertex: a wider one-sided platelet */
+#define ISOFORM_CURVATURE_FLAG_WIDENED 2        /* too few or badly placed points: more rings */
+#define ISOFORM_CURVATURE_FLAG_LOWER_ORDER 4    /* a lower-order fit than the method's */
+#define ISOFORM_CURVATURE_FLAG_NONMANIFOLD 8    /* the vertex's triangles are not one fan */
+#define ISOFORM_CURVATURE_FLAG_ISOLATED 16      /* no triangle uses it: curvature 0 */
+#define ISOFORM_CURVATURE_FLAG_FAILED 32        /* no fit possible: curvature 0 */
+#define ISOFORM_CURVATURE_FLAG_NORMAL_REPAIRED 64 /* its normal was unusable: one from the points */
+
+typedef struct isoform_curvature_options {
+  int method;        /* isoform_curvature_method; default ISOFORM_CURVATURE_QUARTIC */
+  int extra_rings;   /* rings added to the method's platelet, 0..8; default 0 (more
+                        smooth noisy meshes at the cost of detail) */
+  int color_by;      /* quantity ISOFORM_CURVATURE_K1..ABSOLUTE the vertex colours show;
+                        default ISOFORM_CURVATURE_MEAN */
+  int update_normals;/* 1: replace the mesh's normals by the fitted surface's; default 0 */
+  int threads;       /* worker threads; 0 (default) = all cores, 1 = serial */
+} isoform_curvature_options;
+
+ISOFORM_API void isoform_curvature_options_default(isoform_curvature_options* options);
+
+/* What isoform_curvature met: vertex counts per flag, and the robust colour
+ * range (2nd to 98th percentile; symmetric about 0 for signed quantities). */
+typedef struct isoform_curvature_stats {
+  int method;             /* isoform_curvature_method used */
+  int color_by;           /* isoform_curvature_quantity the colours show */
+  long long vertices;
+  long long boundary, widened, lower_order, nonmanifold, isolated, failed, normal_repaired;
+  double color_min, color_max;
+} isoform_curvature_stats;
+
+/* Computes the principal curvatures and directions of every vertex of mesh
+ * (Section 4.2), from its points, triangles and normals (contours carry the
+ * volume's gradient normals; loaded meshes their file's or estimated ones),
+ * and vertex colours; replaces earlier results. Every vertex gets a finite
+ * value; see the flags for those that needed a fallback. O(n), parallel,
+ * deterministic for any thread count. On failure the mesh is unchanged. */
+ISOFORM_API isoform_status isoform_curvature(isoform_mesh* mesh, const isoform_curvature_options* options,
+                                             isoform_progress* progress);
+
+/* 1 if the mesh carries curvature (isoform_curvature ran on it), else 0. */
+ISOFORM_API int isoform_mesh_has_curvature(const isoform_mesh* mesh);
+
+/* Statistics of the last isoform_curvature; ISOFORM_ERR_INVALID_ARGUMENT
+ * when the mesh has none. */
+ISOFORM_API isoform_status isoform_mesh_curvature_stats(const isoform_mesh* mesh, isoform_curvature_stats* out);
+
+/* Copies one quantity: vertex_count floats, or 3 * vertex_count for the
+ * directions. ISOFORM_ERR_INVALID_ARGUMENT when the mesh has no curvature. */
+ISOFORM_API isoform_status isoform_mesh_copy_curvature(const isoform_mesh* mesh, int quantity, float* out);
+
+/* Copies vertex_count flag bytes (ISOFORM_CURVATURE_FLAG_* bits). */
+ISOFORM_API isoform_status isoform_mesh_copy_curvature_flags(const isoform_mesh* mesh, uint8_t* out);
+
+/* 1 if the mesh has vertex colours, else 0; copy-out of 4 * vertex_count
+ * bytes: red, green, blue, alpha. Saved PLY files carry them. */
+ISOFORM_API int isoform_mesh_has_colors(const isoform_mesh* mesh);
+ISOFORM_API isoform_status isoform_mesh_copy_colors(const isoform_mesh* mesh, uint8_t* out);
+
+/* As isoform_mesh_from_arrays, with double-precision points, which the mesh
+ * keeps beside its float copy for curvature fits (float coordinates alone
+ * limit curvature accuracy to about 1e-7 / h^2 for edge length h). */
+ISOFORM_API isoform_status isoform_mesh_from_arrays_f64(const double* points, size_t n,
+                                                        const int32_t* triangles, size_t m,
+                                                        isoform_mesh** out);
 
 #ifdef __cplusplus
 }

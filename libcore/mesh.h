@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "curvature/vertex_curvature.h"
+
 namespace isoform {
 
 struct MeshStats {
@@ -31,6 +33,10 @@ struct ContourStats {
 
 struct Mesh {
   std::vector<float> points;      // 3 per vertex, world coordinates
+  // Optional: the same points in double precision, when the caller had them
+  // (analytic test surfaces). Curvature fits use them when present: float
+  // coordinates alone limit curvature to about 1e-7 / h^2 for edge length h.
+  std::vector<double> precise_points;
   std::vector<float> normals;     // 3 per vertex, unit length
   std::vector<int32_t> triangles; // 3 vertex indices per triangle
   std::vector<int32_t> neighbours;// 3 per triangle: across edge (v_i, v_i+1), -1 if none
@@ -38,6 +44,8 @@ struct Mesh {
   int32_t part_count = 0;
   MeshStats stats;
   ContourStats contour;
+  VertexCurvature curvature;      // empty until Chapter 4 has run (curvature/)
+  std::vector<uint8_t> colors;    // 4 per vertex (red, green, blue, alpha), or empty
 
   size_t vertex_count() const { return points.size() / 3; }
   size_t triangle_count() const { return triangles.size() / 3; }

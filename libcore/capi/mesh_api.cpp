@@ -120,6 +120,24 @@ isoform_status isoform_mesh_from_arrays(const float* points, size_t n, const int
   });
 }
 
+isoform_status isoform_mesh_from_arrays_f64(const double* points, size_t n, const int32_t* triangles, size_t m,
+                                            isoform_mesh** out) {
+  return guarded([&] {
+    if (!out || (n && !points) || (m && !triangles))
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_from_arrays_f64: NULL argument");
+    *out = nullptr;
+    auto mesh = std::make_unique<isoform_mesh>();
+    mesh->mesh.precise_points.assign(points, points + 3 * n);
+    mesh->mesh.points.assign(points, points + 3 * n);
+    for (double c : mesh->mesh.precise_points)
+      if (!std::isfinite(c)) throw isoform::FormatError("isoform_mesh_from_arrays_f64: a vertex coordinate is NaN or infinite");
+    mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
+    finish(mesh->mesh, "isoform_mesh_from_arrays_f64");
+    *out = mesh.release();
+    return ISOFORM_OK;
+  });
+}
+
 isoform_status isoform_mesh_load(const char* path, isoform_mesh** out) {
   return guarded([&] {
     if (!path || !out) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_load: NULL argument");

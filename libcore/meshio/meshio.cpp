@@ -37,6 +37,10 @@ void check_sizes(const Mesh& mesh, const std::string& path) {
     refuse("there are " + std::to_string(mesh.normals.size() / 3) + " normals for " +
            std::to_string(mesh.vertex_count()) + " vertices");
   }
+  if (!mesh.curvature.empty() && mesh.curvature.k1.size() != mesh.vertex_count())
+    refuse("the curvature arrays do not match the vertices");
+  if (!mesh.colors.empty() && mesh.colors.size() != 4 * mesh.vertex_count())
+    refuse("the colours do not match the vertices");
   if (!mesh.parts.empty() && mesh.parts.size() != mesh.triangle_count()) {
     refuse("there are " + std::to_string(mesh.parts.size()) + " parts for " +
            std::to_string(mesh.triangle_count()) + " triangles");

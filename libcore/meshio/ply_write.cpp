@@ -9,6 +9,11 @@
 namespace isoform::meshio {
 namespace {
 
+// Per-vertex curvature (Chapter 4), in this order after the normals.
+const char* const kCurvatureProperties[] = {"k1",  "k2",  "mean", "gauss", "absolute", "d1x",
+                                            "d1y", "d1z", "d2x",  "d2y",   "d2z"};
+constexpr size_t kCurvatureCount = 11;
+
 std::string header_text(const Mesh& mesh) {
   bool normals = !mesh.normals.empty();
   bool parts = !mesh.parts.empty();
@@ -19,6 +24,11 @@ std::string header_text(const Mesh& mesh) {
   text += "element vertex " + std::to_string(mesh.vertex_count()) + "\n";
   text += "property float x\nproperty float y\nproperty float z\n";
   if (normals) text += "property float nx\nproperty float ny\nproperty float nz\n";
+  if (!mesh.curvature.empty())
+    for (const char* name : kCurvatureProperties) text += std::string("property float ") + name + "\n";
+  if (!mesh.curvature.empty()) text += "property uchar curvature_flags\n";
+  if (!mesh.colors.empty())
+    text += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
   text += "element face " + std::to_string(mesh.triangle_count()) + "\n";
   text += "property list uchar int vertex_indices\n";
   if (parts) text += "property int part\n";
@@ -26,15 +36,34 @@ std::string header_text(const Mesh& mesh) {
   return text;
 }
 
+// The curvature values of vertex v in kCurvatureProperties order.
+void curvature_record(const VertexCurvature& c, size_t v, float out[kCurvatureCount]) {
+  const float head[5] = {c.k1[v], c.k2[v], c.mean[v], c.gauss[v], c.absolute[v]};
+  for (size_t k = 0; k < 5; ++k) out[k] = head[k];
+  for (size_t k = 0; k < 3; ++k) {
+    out[5 + k] = c.d1[3 * v + k];
+    out[8 + k] = c.d2[3 * v + k];
+  }
+}
+
 void write_vertices(const Mesh& mesh, AtomicFile& file) {
-  bool normals = !mesh.normals.empty();
-  unsigned char record[24];  // x y z, then nx ny nz when present
+  const bool normals = !mesh.normals.empty(), curvature = !mesh.curvature.empty(), colors = !mesh.colors.empty();
+  // x y z, then nx ny nz, the curvature and its flags, and the colour, each when present
+  unsigned char record[24 + 4 * kCurvatureCount + 1 + 4];
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    for (size_t k = 0; k < 3; ++k) store_float_le(record + 4 * k, mesh.points[3 * v + k]);
-    if (normals) {
-      for (size_t k = 0; k < 3; ++k) store_float_le(record + 12 + 4 * k, mesh.normals[3 * v + k]);
+    size_t at = 0;
+    for (size_t k = 0; k < 3; ++k, at += 4) store_float_le(record + at, mesh.points[3 * v + k]);
+    if (normals)
+      for (size_t k = 0; k < 3; ++k, at += 4) store_float_le(record + at, mesh.normals[3 * v + k]);
+    if (curvature) {
+      float values[kCurvatureCount];
+      curvature_record(mesh.curvature, v, values);
+      for (float x : values) store_float_le(record + at, x), at += 4;
+      record[at++] = mesh.curvature.flags[v];
     }
-    file.write(record, normals ? 24 : 12);
+    if (colors)
+      for (size_t k = 0; k < 4; ++k) record[at++] = mesh.colors[4 * v + k];
+    file.write(record, at);
   }
 }
 

@@ -612,11 +612,20 @@ def case_pipeline(tmp):
     folder = os.path.join(tmp, "out")
     report, _ = run_json("pipeline", "-o", folder, "--size", "48")
     vdb, ply = os.path.join(folder, "phantom.vdb"), os.path.join(folder, "phantom-contour.ply")
-    expect(report["written"] == [vdb, ply], f"written: {report['written']}")
-    expect(leftovers(folder, ["phantom.vdb", "phantom-contour.ply"]) == [],
-           f"left behind: {leftovers(folder, ['phantom.vdb', 'phantom-contour.ply'])}")
+    curved = os.path.join(folder, "phantom-curvature.ply")
+    expect(report["written"] == [vdb, ply, curved], f"written: {report['written']}")
+    expect(leftovers(folder, ["phantom.vdb", "phantom-contour.ply", "phantom-curvature.ply"]) == [],
+           f"left behind: {leftovers(folder, ['phantom.vdb', 'phantom-contour.ply', 'phantom-curvature.ply'])}")
     _, _, _, parts = check_ply_mesh(ply, report["contour"])
     expect(len(set(parts)) >= 2, f"the skull gives {len(set(parts))} parts, expected 2 or more")
+    c = report["curvature"]
+    expect(c["vertices"] == report["contour"]["vertices"] and c["fallbacks"]["failed"] == 0, f"curvature: {c}")
+    # The skull's outer surface dominates and is convex: the median H is positive.
+    expect(c["mean"]["p50"] > 0, f"median mean curvature {c['mean']['p50']}")
+    with open(curved, "rb") as f:
+        header = f.read(2000).split(b"end_header")[0].decode("ascii")
+    for prop in ("k1", "k2", "mean", "gauss", "absolute", "d1x", "d2z", "red", "alpha"):
+        expect(f" {prop}\n" in header, f"phantom-curvature.ply has no vertex property {prop}")
     g = run_json("info", vdb)[0]["grids"][0]
     expect(g["scalar"] and g["active_voxels"] > 0, f"phantom.vdb: {g}")
 
@@ -627,7 +636,7 @@ def case_pipeline_again(tmp):
     proc = run("pipeline", "-o", folder, "--size", "32", "--method", "tetra")
     expect("phantom-contour.ply" in proc.stdout, f"summary: {proc.stdout}")
     check_ply_mesh(os.path.join(folder, "phantom-contour.ply"))
-    expect(sorted(os.listdir(folder)) == ["phantom-contour.ply", "phantom.vdb"],
+    expect(sorted(os.listdir(folder)) == ["phantom-contour.ply", "phantom-curvature.ply", "phantom.vdb"],
            f"folder holds {sorted(os.listdir(folder))}")
 
 

@@ -1,0 +1,96 @@
+// Robust ranges and the two colour maps of curvature pictures.
+#include "curvature_colours.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../errors.h"
+
+namespace isoform {
+namespace {
+
+struct Rgb {
+  double r, g, b;
+};
+
+// Piecewise-linear colour maps through a few control colours, t in [0, 1].
+Rgb lerp_map(const Rgb* stops, int count, double t) {
+  t = std::clamp(t, 0.0, 1.0) * (count - 1);
+  const int i = std::min(count - 2, int(t));
+  const double f = t - i;
+  return {stops[i].r + f * (stops[i + 1].r - stops[i].r), stops[i].g + f * (stops[i + 1].g - stops[i].g),
+          stops[i].b + f * (stops[i + 1].b - stops[i].b)};
+}
+
+// Blue through white to red: negative, zero, positive.
+Rgb diverging(double t) {
+  static const Rgb stops[] = {{0.23, 0.30, 0.75}, {0.55, 0.69, 1.00}, {0.87, 0.87, 0.87},
+                              {0.96, 0.60, 0.48}, {0.71, 0.02, 0.15}};
+  return lerp_map(stops, 5, t);
+}
+
+// Dark violet through green to yellow.
+Rgb sequential(double t) {
+  static const Rgb stops[] = {{0.267, 0.005, 0.329}, {0.230, 0.322, 0.546}, {0.128, 0.567, 0.551},
+                              {0.369, 0.789, 0.383}, {0.993, 0.906, 0.144}};
+  return lerp_map(stops, 5, t);
+}
+
+double percentile(std::vector<float> v, double p) {
+  if (v.empty()) return 0.0;
+  const size_t k = std::min(v.size() - 1, size_t(p * double(v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + long(k), v.end());
+  return v[k];
+}
+
+bool usable(uint8_t flags) { return !(flags & (kCurvatureIsolated | kCurvatureFailed)); }
+
+}  // namespace
+
+const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q) {
+  const VertexCurvature& c = mesh.curvature;
+  if (c.empty() && mesh.vertex_count() > 0) throw InvalidArgument("curvature colours: the mesh has no curvature");
+  switch (q) {
+    case CurvatureQuantity::K1: return c.k1;
+    case CurvatureQuantity::K2: return c.k2;
+    case CurvatureQuantity::Mean: return c.mean;
+    case CurvatureQuantity::Gauss: return c.gauss;
+    case CurvatureQuantity::Absolute: return c.absolute;
+  }
+  throw InvalidArgument("curvature colours: unknown quantity");
+}
+
+void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi) {
+  const std::vector<float>& values = curvature_values(mesh, q);
+  std::vector<float> kept;
+  kept.reserve(values.size());
+  for (size_t v = 0; v < values.size(); ++v)
+    if (usable(mesh.curvature.flags[v])) kept.push_back(values[v]);
+  *lo = percentile(kept, 0.02);
+  *hi = percentile(kept, 0.98);
+  if (q != CurvatureQuantity::Absolute) {
+    const double m = std::max(std::abs(*lo), std::abs(*hi));
+    *lo = -m;
+    *hi = m;
+  }
+}
+
+void colour_by_curvature(Mesh& mesh, CurvatureQuantity q) {
+  double lo, hi;
+  curvature_colour_range(mesh, q, &lo, &hi);
+  const std::vector<float>& values = curvature_values(mesh, q);
+  const double span = hi > lo ? hi - lo : 1.0;
+  mesh.colors.resize(4 * values.size());
+  for (size_t v = 0; v < values.size(); ++v) {
+    const double t = (values[v] - lo) / span;
+    Rgb c = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
+    if (!usable(mesh.curvature.flags[v])) c = {0.5, 0.5, 0.5};
+    uint8_t* out = &mesh.colors[4 * v];
+    out[0] = uint8_t(std::lround(255 * c.r));
+    out[1] = uint8_t(std::lround(255 * c.g));
+    out[2] = uint8_t(std::lround(255 * c.b));
+    out[3] = 255;
+  }
+}
+
+}  // namespace isoform

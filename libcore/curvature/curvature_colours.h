@@ -1,0 +1,25 @@
+// Vertex colours that show where a surface bends (Figure 4.1 of Hamann
+// 1991): one curvature quantity mapped through a colour map over a robust
+// range, the 2nd to 98th percentile, so a few extreme vertices do not wash
+// the picture out. H and K (and k1, k2) use a diverging map centred on zero,
+// |k1|+|k2| a sequential one.
+#pragma once
+
+#include "../mesh.h"
+
+namespace isoform {
+
+enum class CurvatureQuantity { K1 = 0, K2 = 1, Mean = 2, Gauss = 3, Absolute = 4 };
+
+// The per-vertex values of a quantity (mesh.curvature must be computed).
+const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q);
+
+// The robust range used for the colours: [lo, hi]; symmetric about zero for
+// the signed quantities.
+void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi);
+
+// Fills mesh.colors (red, green, blue, alpha per vertex). Vertices flagged
+// isolated or failed are grey.
+void colour_by_curvature(Mesh& mesh, CurvatureQuantity q);
+
+}  // namespace isoform

@@ -1,0 +1,37 @@
+// The height-field fits of Section 4.2 of Hamann (1991): platelet points in
+// a vertex's local frame (u, v along the tangent plane, d along the normal),
+// and a bivariate polynomial d = f(u, v) through the origin fitted to them by
+// least squares (4.28, 4.29). The seed's fit has only the three quadratic
+// terms, so it trusts the normal completely; the other models add the linear
+// terms, which absorb an error in the normal, and cubic or quartic terms,
+// which keep the third and fourth order of the surface out of the second
+// derivatives.
+#pragma once
+
+namespace isoform {
+
+enum class FitModel {
+  SeedQuadratic,  // 1/2 (c20 u^2 + 2 c11 u v + c02 v^2): (4.28), 3 terms
+  Quadric,        // linear and quadratic terms: 5
+  Cubic,          // up to degree 3: 9
+  Quartic         // up to degree 4: 14
+};
+
+// Number of coefficients of a model.
+int fit_terms(FitModel model);
+
+// The derivatives of the fitted height field at the origin.
+struct HeightFit {
+  bool ok = false;
+  double fu = 0, fv = 0, fuu = 0, fuv = 0, fvv = 0;
+  double rcond = 0;  // smallest over largest pivot of the scaled normal equations
+};
+
+// Fits `model` to the points (u[j], v[j], d[j]), j < count. Coordinates are
+// scaled by the largest |(u, v)| before the normal equations are formed, so
+// the conditioning check is independent of the mesh's size. Fails (ok false)
+// with fewer points than terms or when rcond falls below min_rcond.
+HeightFit fit_height(FitModel model, const double* u, const double* v, const double* d, int count,
+                     double min_rcond = 1e-10);
+
+}  // namespace isoform

@@ -1,0 +1,120 @@
+// The Section 4.2 driver: every vertex in parallel, results into the mesh.
+#include "surface_curvature.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+
+#include "../errors.h"
+#include "vertex_fit.h"
+
+namespace isoform {
+namespace {
+
+constexpr size_t kGrain = 4096;
+
+void store(VertexCurvature& c, size_t v, const VertexFitResult& r) {
+  const PrincipalCurvatures& p = r.curvature;
+  c.k1[v] = float(p.k1);
+  c.k2[v] = float(p.k2);
+  c.mean[v] = float(p.mean());
+  c.gauss[v] = float(p.gauss());
+  c.absolute[v] = float(std::abs(p.k1) + std::abs(p.k2));
+  for (int a = 0; a < 3; ++a) {
+    c.d1[3 * v + size_t(a)] = float(p.d1(a));
+    c.d2[3 * v + size_t(a)] = float(p.d2(a));
+  }
+  c.flags[v] = r.flags;
+}
+
+void count_flags(VertexCurvature& c) {
+  CurvatureStats& s = c.stats;
+  s.vertices = (long long)c.flags.size();
+  for (uint8_t f : c.flags) {
+    s.boundary += (f & kCurvatureBoundary) != 0;
+    s.widened += (f & kCurvatureWidened) != 0;
+    s.lower_order += (f & kCurvatureLowerOrder) != 0;
+    s.nonmanifold += (f & kCurvatureNonmanifold) != 0;
+    s.isolated += (f & kCurvatureIsolated) != 0;
+    s.failed += (f & kCurvatureFailed) != 0;
+    s.normal_repaired += (f & kCurvatureNormalRepaired) != 0;
+  }
+}
+
+}  // namespace
+
+void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progress& progress) {
+  const size_t n = mesh.vertex_count();
+  if (options.extra_rings < 0 || options.extra_rings > 8)
+    throw InvalidArgument("curvature: extra rings must be 0 to 8, not " + std::to_string(options.extra_rings));
+  if (!mesh.normals.empty() && mesh.normals.size() != mesh.points.size())
+    throw InvalidArgument("curvature: the mesh has " + std::to_string(mesh.normals.size() / 3) + " normals for " +
+                          std::to_string(n) + " vertices");
+  const VertexRings rings(mesh);
+  VertexCurvature c;
+  c.stats.method = options.method;
+  for (auto* a : {&c.k1, &c.k2, &c.mean, &c.gauss, &c.absolute}) a->resize(n);
+  c.d1.resize(3 * n);
+  c.d2.resize(3 * n);
+  c.flags.resize(n);
+  std::vector<float> fitted_normals(options.update_normals ? 3 * n : 0);
+  tbb::enumerable_thread_specific<VertexFitScratch> scratch;
+  std::atomic<size_t> done{0};
+  std::atomic<bool> stop{false};
+  auto body = [&](const tbb::blocked_range<size_t>& range) {
+    if (stop.load(std::memory_order_relaxed)) return;
+    if (progress.cancelled()) {
+      stop = true;
+      return;
+    }
+    VertexFitScratch& s = scratch.local();
+    for (size_t v = range.begin(); v != range.end(); ++v) {
+      const VertexFitResult r = fit_vertex(mesh, rings, int32_t(v), options.method, options.extra_rings, s);
+      store(c, v, r);
+      if (!fitted_normals.empty() && !(r.flags & (kCurvatureIsolated | kCurvatureFailed)))
+        for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = float(r.curvature.normal(a));
+      else if (!fitted_normals.empty() && mesh.normals.size() == 3 * n)
+        for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = mesh.normals[3 * v + size_t(a)];
+    }
+    progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
+  };
+  const tbb::blocked_range<size_t> all(0, n, kGrain);
+  if (options.threads == 1) {
+    for (size_t b = 0; b < n; b += kGrain) body(tbb::blocked_range<size_t>(b, std::min(n, b + kGrain)));
+  } else if (options.threads > 1) {
+    tbb::task_arena arena(options.threads);
+    arena.execute([&] { tbb::parallel_for(all, body); });
+  } else {
+    tbb::parallel_for(all, body);
+  }
+  if (stop) throw Cancelled("curvature: cancelled");
+  count_flags(c);
+  mesh.curvature = std::move(c);
+  if (options.update_normals) mesh.normals = std::move(fitted_normals);
+}
+
+const char* curvature_method_name(CurvatureMethod method) {
+  switch (method) {
+    case CurvatureMethod::Seed: return "seed";
+    case CurvatureMethod::Quadric: return "quadric";
+    case CurvatureMethod::Cubic: return "cubic";
+    case CurvatureMethod::Quartic: return "quartic";
+  }
+  return "unknown";
+}
+
+bool parse_curvature_method(const char* name, CurvatureMethod* out) {
+  for (CurvatureMethod m : {CurvatureMethod::Seed, CurvatureMethod::Quadric, CurvatureMethod::Cubic,
+                            CurvatureMethod::Quartic})
+    if (name && std::strcmp(name, curvature_method_name(m)) == 0) {
+      *out = m;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace isoform

@@ -1,0 +1,50 @@
+// The vertex neighbourhoods that curvature fits use: each vertex's one-ring
+// (the other vertices of its platelet, Definition 4.9 of Hamann 1991) in a
+// compressed table, boundary flags, and k-rings gathered by breadth-first
+// search over the one-rings.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../mesh.h"
+
+namespace isoform {
+
+class VertexRings {
+ public:
+  // O(n) in the mesh size. Repeated vertices within a triangle are ignored.
+  explicit VertexRings(const Mesh& mesh);
+
+  size_t vertex_count() const { return start_.size() - 1; }
+  // The one-ring of v, sorted by vertex index, without v itself.
+  const int32_t* ring_begin(int32_t v) const { return ring_.data() + start_[size_t(v)]; }
+  const int32_t* ring_end(int32_t v) const { return ring_.data() + start_[size_t(v) + 1]; }
+  size_t valence(int32_t v) const { return size_t(start_[size_t(v) + 1] - start_[size_t(v)]); }
+  // True where v lies on an edge that only one triangle uses.
+  bool on_boundary(int32_t v) const { return boundary_[size_t(v)] != 0; }
+  // True where v's triangles do not form a single fan (an edge with three or
+  // more triangles, or two fans meeting at v).
+  bool nonmanifold(int32_t v) const { return nonmanifold_[size_t(v)] != 0; }
+
+ private:
+  std::vector<int64_t> start_;
+  std::vector<int32_t> ring_;
+  std::vector<uint8_t> boundary_;
+  std::vector<uint8_t> nonmanifold_;
+};
+
+// Scratch space for gathering rings; one per thread.
+struct RingScratch {
+  std::vector<uint32_t> mark;  // per vertex: the stamp of the last gather that saw it
+  uint32_t stamp = 0;
+  std::vector<int32_t> out;
+  std::vector<int32_t> seeds;  // the ring being expanded
+};
+
+// The vertices within `count` steps of v (v excluded) into scratch.out,
+// nearest ring first, each ring in ascending vertex order (so the result does
+// not depend on the thread or the order of earlier calls).
+void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& scratch);
+
+}  // namespace isoform
