@@ -50,6 +50,28 @@ isoform_status copy_out(const isoform_mesh* mesh, T* out, const std::vector<T>& 
   });
 }
 
+// Points of either precision; double ones are also kept for curvature fits.
+template <class Real>
+isoform_status mesh_from_arrays(const Real* points, size_t n, const int32_t* triangles, size_t m,
+                                isoform_mesh** out, const char* what) {
+  return guarded([&] {
+    if (!out || (n && !points) || (m && !triangles))
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT, std::string(what) + ": NULL argument");
+    *out = nullptr;
+    auto mesh = std::make_unique<isoform_mesh>();
+    mesh->mesh.points.assign(points, points + 3 * n);
+    if (sizeof(Real) == sizeof(double)) {
+      mesh->mesh.precise_points.assign(points, points + 3 * n);
+      for (double c : mesh->mesh.precise_points)
+        if (!std::isfinite(c)) throw isoform::FormatError(std::string(what) + ": a vertex coordinate is NaN or infinite");
+    }
+    mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
+    finish(mesh->mesh, what);
+    *out = mesh.release();
+    return ISOFORM_OK;
+  });
+}
+
 const std::vector<float>& points_of(const isoform::Mesh& m) { return m.points; }
 const std::vector<float>& normals_of(const isoform::Mesh& m) { return m.normals; }
 const std::vector<int32_t>& triangles_of(const isoform::Mesh& m) { return m.triangles; }
@@ -107,35 +129,12 @@ isoform_status isoform_mesh_copy_parts(const isoform_mesh* mesh, int32_t* out) {
 
 isoform_status isoform_mesh_from_arrays(const float* points, size_t n, const int32_t* triangles, size_t m,
                                         isoform_mesh** out) {
-  return guarded([&] {
-    if (!out || (n && !points) || (m && !triangles))
-      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_from_arrays: NULL argument");
-    *out = nullptr;
-    auto mesh = std::make_unique<isoform_mesh>();
-    mesh->mesh.points.assign(points, points + 3 * n);
-    mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
-    finish(mesh->mesh, "isoform_mesh_from_arrays");
-    *out = mesh.release();
-    return ISOFORM_OK;
-  });
+  return mesh_from_arrays(points, n, triangles, m, out, "isoform_mesh_from_arrays");
 }
 
 isoform_status isoform_mesh_from_arrays_f64(const double* points, size_t n, const int32_t* triangles, size_t m,
                                             isoform_mesh** out) {
-  return guarded([&] {
-    if (!out || (n && !points) || (m && !triangles))
-      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_from_arrays_f64: NULL argument");
-    *out = nullptr;
-    auto mesh = std::make_unique<isoform_mesh>();
-    mesh->mesh.precise_points.assign(points, points + 3 * n);
-    mesh->mesh.points.assign(points, points + 3 * n);
-    for (double c : mesh->mesh.precise_points)
-      if (!std::isfinite(c)) throw isoform::FormatError("isoform_mesh_from_arrays_f64: a vertex coordinate is NaN or infinite");
-    mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
-    finish(mesh->mesh, "isoform_mesh_from_arrays_f64");
-    *out = mesh.release();
-    return ISOFORM_OK;
-  });
+  return mesh_from_arrays(points, n, triangles, m, out, "isoform_mesh_from_arrays_f64");
 }
 
 isoform_status isoform_mesh_load(const char* path, isoform_mesh** out) {

@@ -662,13 +662,15 @@ GROUPS = {
 }
 
 
-def main():
+def run_groups(groups, argv):
+    """Runs the cases of the group named in argv (ISOFORM_BINARY SHARED_DATA_DIR GROUP),
+    each in a fresh temporary folder, and exits non-zero if any failed."""
     global BINARY, DATA
-    if len(sys.argv) != 4 or sys.argv[3] not in GROUPS:
-        sys.exit(f"usage: {sys.argv[0]} ISOFORM_BINARY SHARED_DATA_DIR {{{','.join(GROUPS)}}}")
-    BINARY, DATA, group = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
+    if len(argv) != 4 or argv[3] not in groups:
+        sys.exit(f"usage: {argv[0]} ISOFORM_BINARY SHARED_DATA_DIR {{{','.join(groups)}}}")
+    BINARY, DATA, group = os.path.abspath(argv[1]), argv[2], argv[3]
     failed = 0
-    for case in GROUPS[group]:
+    for case in groups[group]:
         with tempfile.TemporaryDirectory(prefix="isoform-cli-") as tmp:
             try:
                 case(tmp)
@@ -679,9 +681,9 @@ def main():
             except Exception:
                 failed += 1
                 print(f"FAIL {case.__name__}: unexpected error\n{traceback.format_exc()}")
-    print(f"{group}: {len(GROUPS[group]) - failed} passed, {failed} failed")
+    print(f"{group}: {len(groups[group]) - failed} passed, {failed} failed")
     sys.exit(1 if failed else 0)
 
 
 if __name__ == "__main__":
-    main()
+    run_groups(GROUPS, sys.argv)

@@ -5,10 +5,7 @@ the JSON summary, and bad input. Shares test_cli.py's helpers.
 Usage: test_cli_curvature.py ISOFORM_BINARY SHARED_DATA_DIR GROUP"""
 import math
 import os
-import struct
 import sys
-import tempfile
-import traceback
 
 import test_cli as base
 from test_cli import expect, run, run_json, data, leftovers, expect_failure
@@ -115,25 +112,5 @@ GROUPS = {
 }
 
 
-def main():
-    if len(sys.argv) != 4 or sys.argv[3] not in GROUPS:
-        sys.exit(f"usage: {sys.argv[0]} ISOFORM_BINARY SHARED_DATA_DIR {{{','.join(GROUPS)}}}")
-    base.BINARY, base.DATA, group = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
-    failed = 0
-    for case in GROUPS[group]:
-        with tempfile.TemporaryDirectory(prefix="isoform-cli-") as tmp:
-            try:
-                case(tmp)
-                print(f"PASS {case.__name__}")
-            except base.CaseFailure as failure:
-                failed += 1
-                print(f"FAIL {case.__name__}: {failure}")
-            except Exception:
-                failed += 1
-                print(f"FAIL {case.__name__}: unexpected error\n{traceback.format_exc()}")
-    print(f"{group}: {len(GROUPS[group]) - failed} passed, {failed} failed")
-    sys.exit(1 if failed else 0)
-
-
 if __name__ == "__main__":
-    main()
+    base.run_groups(GROUPS, sys.argv)
