@@ -83,6 +83,14 @@ def case_import_runs_on_a_worker_thread():
     assert (len(mesh.vertices), len(mesh.polygons)) == (ARGS.expect_vertices, ARGS.expect_triangles), \
         f"{len(mesh.vertices)} vertices {len(mesh.polygons)} faces"
     assert STARTED_JOBS[-1].progress.stage_name == "done", STARTED_JOBS[-1].progress.stage_name
+    yield
+    # One undo step (REGISTER and UNDO, pushed when the modal operator ends).
+    with bpy.context.temp_override(**view3d_override()):
+        bpy.ops.ed.undo()
+    assert object_names() == before, f"after undo: {object_names()}, before: {before}"
+    with bpy.context.temp_override(**view3d_override()):
+        bpy.ops.ed.redo()
+    assert "smoke" in object_names(), f"after redo: {object_names()}"
 
 
 def case_escape_cancels():
@@ -103,6 +111,21 @@ def case_escape_cancels():
     # Cancelled by the library (Esc during loading or contouring) or dropped
     # by the operator (Esc during a later stage): either way nothing was added.
     assert job.error is None or isinstance(job.error, native.CancelledError), repr(job.error)
+
+
+def case_worker_error_reported():
+    """A vector grid fails on the worker thread; its message (thread-local
+    in the library) reaches the job, and nothing is added."""
+    before = object_names()
+    result = invoke(bpy.ops.import_scene.isoform_vdb, filepath=ARGS.vector_vdb, grid="velocity")
+    assert result == {'RUNNING_MODAL'}, f"invoke returned {result}"
+    job = STARTED_JOBS[-1]
+    while not job.done:
+        yield
+    for _ in range(5):
+        yield
+    assert "scalar grids only" in str(job.error), repr(job.error)
+    assert object_names() == before, f"objects {before} -> {object_names()}"
 
 
 def case_volume_in_memory_cleans_up():
@@ -126,7 +149,7 @@ def case_volume_in_memory_cleans_up():
     assert not leftovers, f"temporary files left: {leftovers}"
 
 
-CASES = [case_import_runs_on_a_worker_thread, case_escape_cancels,
+CASES = [case_import_runs_on_a_worker_thread, case_escape_cancels, case_worker_error_reported,
          case_volume_in_memory_cleans_up]
 
 
