@@ -93,6 +93,42 @@ def case_import_runs_on_a_worker_thread():
     assert "smoke" in object_names(), f"after redo: {object_names()}"
 
 
+def file_browser():
+    """The window, area and region of the open file browser, if any."""
+    for window in bpy.context.window_manager.windows:
+        for area in window.screen.areas:
+            if area.type == 'FILE_BROWSER':
+                region = next(r for r in area.regions if r.type == 'WINDOW')
+                return {"window": window, "screen": window.screen, "area": area, "region": region}
+    return None
+
+
+def case_file_browser_path():
+    """File > Import as a user does it: the file browser opens, a file is
+    confirmed, execute() then runs the work on a worker thread."""
+    before = object_names()
+    jobs_before = len(STARTED_JOBS)
+    result = invoke(bpy.ops.import_scene.isoform_vdb)
+    assert result == {'RUNNING_MODAL'}, f"invoke returned {result}"
+    while file_browser() is None:
+        yield
+    browser = file_browser()
+    params = browser["area"].spaces.active.params
+    params.directory = ARGS.data.encode()  # bytes in Blender 3.4
+    params.filename = "sphere.vdb"
+    yield
+    with bpy.context.temp_override(**browser):
+        bpy.ops.file.execute()
+    while "sphere" not in bpy.data.objects:
+        yield
+    assert len(STARTED_JOBS) == jobs_before + 1, "the work did not run on a worker job"
+    assert len(bpy.data.objects["sphere"].data.vertices) > 0, "empty sphere"
+    yield
+    with bpy.context.temp_override(**view3d_override()):
+        bpy.ops.ed.undo()
+    assert object_names() == before, f"after undo: {object_names()}, before: {before}"
+
+
 def case_escape_cancels():
     from isoform_blender import native
     before = object_names()
@@ -149,8 +185,8 @@ def case_volume_in_memory_cleans_up():
     assert not leftovers, f"temporary files left: {leftovers}"
 
 
-CASES = [case_import_runs_on_a_worker_thread, case_escape_cancels, case_worker_error_reported,
-         case_volume_in_memory_cleans_up]
+CASES = [case_import_runs_on_a_worker_thread, case_file_browser_path, case_escape_cancels,
+         case_worker_error_reported, case_volume_in_memory_cleans_up]
 
 
 def run_cases():
