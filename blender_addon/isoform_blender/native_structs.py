@@ -1,0 +1,94 @@
+"""ctypes mirrors of the plain structs of isoform.h, field by field.
+
+The order, names and C types here must match libcore/isoform.h exactly: a
+mismatch is not detected by ctypes and silently corrupts memory. The test
+tests/blender/test_native.py compares every size and offset below with the
+values a C program compiled against isoform.h reports (struct_layout.c).
+Plain ctypes, no bpy, no numpy.
+"""
+import ctypes
+
+c_long_long = ctypes.c_longlong
+
+
+class Progress(ctypes.Structure):
+    """isoform_progress: written by the library, cancel set by the caller."""
+    _fields_ = [
+        ("fraction", ctypes.c_float),  # 0..1 within the current stage
+        ("stage", ctypes.c_int),       # an isoform_stage value
+        ("cancel", ctypes.c_int),      # non-zero asks the running call to stop
+    ]
+
+
+class GridInfo(ctypes.Structure):
+    """isoform_grid_info: facts about one grid."""
+    _fields_ = [
+        ("name", ctypes.c_char * 256),
+        ("value_type", ctypes.c_char * 32),
+        ("grid_class", ctypes.c_int),
+        ("is_scalar", ctypes.c_int),
+        ("value_min", ctypes.c_double),
+        ("value_max", ctypes.c_double),
+        ("background", ctypes.c_double),
+        ("active_voxels", c_long_long),
+        ("bbox_min", ctypes.c_int * 3),
+        ("bbox_max", ctypes.c_int * 3),
+        ("voxel_size", ctypes.c_double * 3),
+        ("transform", ctypes.c_double * 16),  # row-major index -> world
+    ]
+
+
+class RawOptions(ctypes.Structure):
+    """isoform_raw_options: how to read a headerless raw scan."""
+    _fields_ = [
+        ("dims", ctypes.c_int * 3),
+        ("scalar_type", ctypes.c_int),
+        ("big_endian", ctypes.c_int),
+        ("spacing", ctypes.c_double * 3),
+        ("origin", ctypes.c_double * 3),
+        ("header_bytes", ctypes.c_size_t),
+    ]
+
+
+class ContourOptions(ctypes.Structure):
+    """isoform_contour_options."""
+    _fields_ = [
+        ("isovalue", ctypes.c_double),
+        ("auto_isovalue", ctypes.c_int),
+        ("method", ctypes.c_int),
+        ("orientation", ctypes.c_int),
+        ("threads", ctypes.c_int),
+    ]
+
+
+class MeshStats(ctypes.Structure):
+    """isoform_mesh_stats: facts computed when a mesh was made."""
+    _fields_ = [
+        ("vertices", c_long_long),
+        ("triangles", c_long_long),
+        ("parts", c_long_long),
+        ("boundary_edges", c_long_long),
+        ("nonmanifold_edges", c_long_long),
+        ("inconsistent_edges", c_long_long),
+        ("degenerate_triangles", c_long_long),
+        ("euler_characteristic", c_long_long),
+        ("isovalue", ctypes.c_double),
+        ("isovalue_was_auto", ctypes.c_int),
+        ("ambiguous_faces", c_long_long),
+        ("degenerate_saddles", c_long_long),
+        ("extra_points", c_long_long),
+        ("centroid_points", c_long_long),
+        ("near_sample_points", c_long_long),
+        ("bbox_min", ctypes.c_double * 3),
+        ("bbox_max", ctypes.c_double * 3),
+    ]
+
+
+# Every mirrored struct by its C name; the layout test walks this table.
+STRUCTS = {
+    "isoform_progress": Progress,
+    "isoform_grid_info": GridInfo,
+    "isoform_raw_options": RawOptions,
+    "isoform_contour_options": ContourOptions,
+    "isoform_mesh_stats": MeshStats,
+}

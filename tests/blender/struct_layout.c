@@ -1,0 +1,91 @@
+/* Prints, as JSON, ISOFORM_VERSION and the size and field offsets of every
+ * plain struct of isoform.h, as this C compiler lays them out. The ctypes
+ * mirrors of the Blender add-on (native_structs.py) are checked against this
+ * output by test_native.py: a silent layout mismatch is the classic ctypes bug. */
+#include <stddef.h>
+#include <stdio.h>
+
+#include "isoform.h"
+
+static int first_struct = 1;
+static int first_field = 1;
+
+static void begin(const char* name, size_t size) {
+  printf("%s\n  \"%s\": {\"size\": %zu, \"fields\": [", first_struct ? "" : ",", name, size);
+  first_struct = 0;
+  first_field = 1;
+}
+
+static void field(const char* name, size_t offset, size_t size) {
+  printf("%s[\"%s\", %zu, %zu]", first_field ? "" : ", ", name, offset, size);
+  first_field = 0;
+}
+
+static void end(void) { printf("]}"); }
+
+#define FIELD(type, member) field(#member, offsetof(type, member), sizeof(((type*)0)->member))
+
+int main(void) {
+  printf("{\"version\": %d, \"structs\": {", ISOFORM_VERSION);
+
+  begin("isoform_progress", sizeof(isoform_progress));
+  FIELD(isoform_progress, fraction);
+  FIELD(isoform_progress, stage);
+  FIELD(isoform_progress, cancel);
+  end();
+
+  begin("isoform_grid_info", sizeof(isoform_grid_info));
+  FIELD(isoform_grid_info, name);
+  FIELD(isoform_grid_info, value_type);
+  FIELD(isoform_grid_info, grid_class);
+  FIELD(isoform_grid_info, is_scalar);
+  FIELD(isoform_grid_info, value_min);
+  FIELD(isoform_grid_info, value_max);
+  FIELD(isoform_grid_info, background);
+  FIELD(isoform_grid_info, active_voxels);
+  FIELD(isoform_grid_info, bbox_min);
+  FIELD(isoform_grid_info, bbox_max);
+  FIELD(isoform_grid_info, voxel_size);
+  FIELD(isoform_grid_info, transform);
+  end();
+
+  begin("isoform_raw_options", sizeof(isoform_raw_options));
+  FIELD(isoform_raw_options, dims);
+  FIELD(isoform_raw_options, scalar_type);
+  FIELD(isoform_raw_options, big_endian);
+  FIELD(isoform_raw_options, spacing);
+  FIELD(isoform_raw_options, origin);
+  FIELD(isoform_raw_options, header_bytes);
+  end();
+
+  begin("isoform_contour_options", sizeof(isoform_contour_options));
+  FIELD(isoform_contour_options, isovalue);
+  FIELD(isoform_contour_options, auto_isovalue);
+  FIELD(isoform_contour_options, method);
+  FIELD(isoform_contour_options, orientation);
+  FIELD(isoform_contour_options, threads);
+  end();
+
+  begin("isoform_mesh_stats", sizeof(isoform_mesh_stats));
+  FIELD(isoform_mesh_stats, vertices);
+  FIELD(isoform_mesh_stats, triangles);
+  FIELD(isoform_mesh_stats, parts);
+  FIELD(isoform_mesh_stats, boundary_edges);
+  FIELD(isoform_mesh_stats, nonmanifold_edges);
+  FIELD(isoform_mesh_stats, inconsistent_edges);
+  FIELD(isoform_mesh_stats, degenerate_triangles);
+  FIELD(isoform_mesh_stats, euler_characteristic);
+  FIELD(isoform_mesh_stats, isovalue);
+  FIELD(isoform_mesh_stats, isovalue_was_auto);
+  FIELD(isoform_mesh_stats, ambiguous_faces);
+  FIELD(isoform_mesh_stats, degenerate_saddles);
+  FIELD(isoform_mesh_stats, extra_points);
+  FIELD(isoform_mesh_stats, centroid_points);
+  FIELD(isoform_mesh_stats, near_sample_points);
+  FIELD(isoform_mesh_stats, bbox_min);
+  FIELD(isoform_mesh_stats, bbox_max);
+  end();
+
+  printf("\n}}\n");
+  return 0;
+}
