@@ -49,8 +49,9 @@ int run_parsed(const std::vector<Command>& commands) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"isoform: scalar volumes (OpenVDB grids, CT scans) to watertight triangle meshes, "
-               "after Hamann (1991), Chapter 3",
+  CLI::App app{"isoform: scalar volumes (OpenVDB grids, CT scans) to watertight triangle meshes "
+               "(Chapter 3) and to slices, boxes and transparency stacks (Chapter 2), after Hamann "
+               "(1991)",
                "isoform"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text);
