@@ -14,6 +14,7 @@ import struct
 import sys
 import zlib
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import test_cli as base  # noqa: E402
 from test_cli import (CaseFailure, check_one_error_line, data, expect, leftovers,  # noqa: E402
