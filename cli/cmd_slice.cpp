@@ -1,6 +1,8 @@
 // `isoform slice FILE -o DIR`: the three orthogonal slices of Section 2.3 as
 // PNG images with a colour bar, and as meshes (coloured planes, graphs as
 // surfaces and as curve networks).
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
@@ -62,7 +64,10 @@ void parse_at(const SliceArgs& args, const isoform_grid_info& info, isoform_slic
       number = w.substr(2);
     }
     if (axis < 0 || axis > 2) throw Failure("--at '" + args.at + "': '" + w + "' is not x=, y= or z= a number");
-    options.position[axis] = parse_numbers(number, "--at", 1)[0];
+    char* end = nullptr;
+    options.position[axis] = std::strtod(number.c_str(), &end);
+    if (number.empty() || *end != '\0' || !std::isfinite(options.position[axis]))
+      throw Failure("--at '" + args.at + "': '" + w + "' is not x=, y= or z= a number");
     next = axis + 1;
   };
   for (char c : args.at + ",") {

@@ -49,14 +49,20 @@ Target resolve(const isoform_volume* volume, int grid, const char* call) {
   return t;
 }
 
-vis::ColourSettings colour_settings(const isoform_colour_options& o) {
-  if (o.map < 0 || o.map > 2) throw isoform::InvalidArgument("unknown colour map " + std::to_string(o.map));
+// The colour options, checked here so that the message names the grid.
+vis::ColourSettings colour_settings(const isoform_colour_options& o, const vis::Domain& d) {
+  if (o.map < 0 || o.map > 2) throw isoform::InvalidArgument(d.what + ": unknown colour map " + std::to_string(o.map));
   vis::ColourSettings s;
   s.map = vis::MapId(o.map);
   s.levels = o.levels;
   s.fixed_range = o.fixed_range != 0;
   s.range_min = o.range_min;
   s.range_max = o.range_max;
+  try {
+    vis::make_scale(s, {});
+  } catch (const isoform::InvalidArgument& e) {
+    throw isoform::InvalidArgument(d.what + ": " + e.what());
+  }
   return s;
 }
 
@@ -142,7 +148,7 @@ isoform_status isoform_slice_image(const isoform_volume* volume, int grid, int a
     const Target t = resolve(volume, grid, "isoform_slice_image");
     check_axis(axis, 2, t.domain);
     const auto slices = vis::sample_slices(*t.grid, t.domain, slice_settings(*options));
-    const vis::ColourScale scale = vis::slices_scale(slices, colour_settings(options->colour));
+    const vis::ColourScale scale = vis::slices_scale(slices, colour_settings(options->colour, t.domain));
     auto image = std::make_unique<isoform_image>();
     image->image = vis::slice_image(slices[axis], scale, options->colour_bar != 0);
     *out = image.release();
@@ -161,7 +167,7 @@ isoform_status isoform_slice_mesh(const isoform_volume* volume, int grid, int ax
     if (!(options->height >= 0.0) || !std::isfinite(options->height))
       return fail(ISOFORM_ERR_INVALID_ARGUMENT, t.domain.what + ": graph height must be 0 or more");
     const auto slices = vis::sample_slices(*t.grid, t.domain, slice_settings(*options));
-    const vis::ColourScale scale = vis::slices_scale(slices, colour_settings(options->colour));
+    const vis::ColourScale scale = vis::slices_scale(slices, colour_settings(options->colour, t.domain));
     isoform::Mesh mesh;
     for (int a = 0; a < 3; ++a)
       if (axis == 3 || axis == a)
@@ -197,7 +203,7 @@ isoform_status isoform_boxes(const isoform_volume* volume, int grid, const isofo
     } else {
       return fail(ISOFORM_ERR_INVALID_ARGUMENT, t.domain.what + ": unknown domain kind " + std::to_string(options->domain));
     }
-    *out = wrap(vis::domain_boxes(*t.grid, t.domain, map, s, colour_settings(options->colour)));
+    *out = wrap(vis::domain_boxes(*t.grid, t.domain, map, s, colour_settings(options->colour, t.domain)));
     return ISOFORM_OK;
   });
 }
@@ -214,7 +220,7 @@ isoform_status isoform_stack(const isoform_volume* volume, int grid, const isofo
       s.view[a] = options->view[a];
     }
     s.transparency = options->transparency;
-    *out = wrap(vis::transparency_stack(*t.grid, t.domain, s, colour_settings(options->colour)));
+    *out = wrap(vis::transparency_stack(*t.grid, t.domain, s, colour_settings(options->colour, t.domain)));
     return ISOFORM_OK;
   });
 }
