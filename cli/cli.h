@@ -62,5 +62,8 @@ Command add_contour_command(CLI::App& parent);
 Command add_convert_command(CLI::App& parent);
 Command add_pipeline_command(CLI::App& parent);
 Command add_curvature_command(CLI::App& parent);
+Command add_slice_command(CLI::App& parent);
+Command add_boxes_command(CLI::App& parent);
+Command add_stack_command(CLI::App& parent);
 
 }  // namespace isoform::cli

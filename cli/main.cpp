@@ -49,15 +49,18 @@ int run_parsed(const std::vector<Command>& commands) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"isoform: scalar volumes (OpenVDB grids, CT scans) to watertight triangle meshes, "
-               "after Hamann (1991), Chapter 3",
+  CLI::App app{"isoform: scalar volumes (OpenVDB grids, CT scans) to watertight triangle meshes "
+               "(Chapter 3) and to slices, boxes and transparency stacks (Chapter 2), after Hamann "
+               "(1991)",
                "isoform"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text);
   const std::vector<Command> commands = {
       isoform::cli::add_info_command(app), isoform::cli::add_contour_command(app),
       isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app),
-      isoform::cli::add_curvature_command(app)};
+      isoform::cli::add_curvature_command(app),
+      isoform::cli::add_slice_command(app),   isoform::cli::add_boxes_command(app),
+      isoform::cli::add_stack_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

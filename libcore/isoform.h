@@ -268,7 +268,8 @@ ISOFORM_API isoform_status isoform_mesh_load(const char* path, isoform_mesh** ou
 /* Writes binary PLY (x y z nx ny nz per vertex, then k1 k2 mean gauss
  * absolute d1x d1y d1z d2x d2y d2z curvature_flags when the mesh has
  * curvature, red green blue alpha when it has colours; vertex_indices and
- * part per face), OBJ (v, vn, f) or binary STL, chosen by the extension of path.
+ * part per face; an edge element when it has loose edges), OBJ (v, vn, f, l)
+ * or binary STL, chosen by the extension of path.
  * Written to a temporary file beside path and renamed, so a failure never
  * leaves half a file. */
 ISOFORM_API isoform_status isoform_mesh_save(const isoform_mesh* mesh, const char* path);
@@ -357,10 +358,8 @@ ISOFORM_API isoform_status isoform_mesh_copy_curvature(const isoform_mesh* mesh,
 /* Copies vertex_count flag bytes (ISOFORM_CURVATURE_FLAG_* bits). */
 ISOFORM_API isoform_status isoform_mesh_copy_curvature_flags(const isoform_mesh* mesh, uint8_t* out);
 
-/* 1 if the mesh has vertex colours, else 0; copy-out of 4 * vertex_count
- * bytes: red, green, blue, alpha. Saved PLY files carry them. */
-ISOFORM_API int isoform_mesh_has_colors(const isoform_mesh* mesh);
-ISOFORM_API isoform_status isoform_mesh_copy_colors(const isoform_mesh* mesh, uint8_t* out);
+/* The colours isoform_curvature sets are read with isoform_mesh_color_count
+ * and isoform_mesh_copy_colors (Volume visualisation, below). */
 
 /* As isoform_mesh_from_arrays, with double-precision points, which the mesh
  * keeps beside its float copy for curvature fits (float coordinates alone
@@ -368,6 +367,159 @@ ISOFORM_API isoform_status isoform_mesh_copy_colors(const isoform_mesh* mesh, ui
 ISOFORM_API isoform_status isoform_mesh_from_arrays_f64(const double* points, size_t n,
                                                         const int32_t* triangles, size_t m,
                                                         isoform_mesh** out);
+
+/* ------------------------------------------------------------------ */
+/* Volume visualisation (Hamann 1991, Chapter 2)                      */
+/* ------------------------------------------------------------------ */
+
+/* The domain of a grid is its active index bounding box (bbox_min..bbox_max
+ * of isoform_grid_info), mapped to world coordinates by the grid's
+ * transform; values inside it are trilinear in the grid's samples
+ * (inactive samples and tiles count with their stored value). Meshes made
+ * here carry per-vertex colours with alpha, which isoform_mesh_save writes as
+ * PLY properties red green blue alpha (uchar); curve networks are PLY edges.
+ * Axis 0, 1, 2 means the plane x = c1, y = c2, z = c3 of Section 2.3. */
+
+typedef enum isoform_colour_map_id {
+  ISOFORM_MAP_VIRIDIS = 0,     /* perceptually uniform, dark blue to yellow */
+  ISOFORM_MAP_DIVERGING = 1,   /* blue, white at 0, red; range symmetric about 0 */
+  ISOFORM_MAP_GREEN_WHITE = 2  /* low green to high white (Figures 2.2-2.4) */
+} isoform_colour_map_id;
+
+/* How function values become colours: the linear colour-index map of
+ * Section 2.2, c = ceil(((f_max - f) c_min + (f - f_min) c_max) / (f_max - f_min)),
+ * with c_min = 0 and c_max = levels - 1, then the map's colour of index c. */
+typedef struct isoform_colour_options {
+  int map;           /* isoform_colour_map_id; default ISOFORM_MAP_VIRIDIS
+                        (boxes: ISOFORM_MAP_GREEN_WHITE) */
+  int levels;        /* colour indices c_min..c_max = 0..levels-1, 2..65536; default 256 */
+  int fixed_range;   /* 0 (default): f_min, f_max are the least and greatest
+                        value sampled (diverging: -m..m, m = max |f|);
+                        1: use range_min, range_max */
+  double range_min;  /* f_min in the grid's value units when fixed_range; default 0 */
+  double range_max;  /* f_max when fixed_range, > range_min; default 1 */
+} isoform_colour_options;
+
+ISOFORM_API void isoform_colour_options_default(isoform_colour_options* options);
+
+/* An RGBA image made by the library (8 bits per channel, rows top to bottom). */
+typedef struct isoform_image isoform_image;
+
+typedef struct isoform_slice_options {
+  double position[3];  /* c1, c2, c3: where the planes x = c1, y = c2, z = c3
+                          cut the domain; default 0.5, 0.5, 0.5 */
+  int world;           /* 0 (default): position is normalised, 0..1 across the
+                          domain's extent per axis; 1: position is in world units */
+  int resolution;      /* samples along the longer side of each slice (k+1 or
+                          l+1 of Section 2.3), 2..16384; the shorter side in
+                          proportion to the domain (at least 2); default 256 */
+  int colour_bar;      /* images only: 1 (default) adds a colour bar on the right */
+  double height;       /* graphs only: the largest displacement of the graph
+                          from its plane, as a fraction of the domain's largest
+                          world extent; default 0.25 */
+  isoform_colour_options colour; /* default viridis, range over all three slices */
+} isoform_slice_options;
+
+ISOFORM_API void isoform_slice_options_default(isoform_slice_options* options);
+
+/* Samples slice `axis` (0, 1, 2) of grid `grid` into a new image: pixel
+ * (column, row) of the slice part is the trilinear value at sample point
+ * (column, res_v - 1 - row) of the slice's grid, whose horizontal axis is
+ * y, x, x and vertical axis z, z, y for axis 0, 1, 2. The colour range spans
+ * all three slices unless fixed. Errors: no such grid, a position outside
+ * the domain, a resolution out of range. Time O(resolution^2). */
+ISOFORM_API isoform_status isoform_slice_image(const isoform_volume* volume, int grid, int axis,
+                                               const isoform_slice_options* options,
+                                               isoform_image** out);
+
+typedef enum isoform_slice_kind {
+  ISOFORM_SLICE_PLANE = 0,   /* Gouraud-coloured rectangles in the domain (Fig. 2.7) */
+  ISOFORM_SLICE_SURFACE = 1, /* graphs of the slice functions, triangles I1, I2 (Fig. 2.9) */
+  ISOFORM_SLICE_CURVES = 2   /* the same graphs as curve networks: edges, no triangles */
+} isoform_slice_kind;
+
+/* Makes the slices of axis 0, 1 or 2, or of all three when axis is 3, as a
+ * new coloured mesh in world coordinates. Planes also get the 12 edges of
+ * the domain box. A graph lies over its plane, displaced along the plane's
+ * normal by height * extent * (f - f_min) / (f_max - f_min). Vertices carry
+ * colours (alpha 255) and normals; errors as for isoform_slice_image. */
+ISOFORM_API isoform_status isoform_slice_mesh(const isoform_volume* volume, int grid, int axis,
+                                              int kind, const isoform_slice_options* options,
+                                              isoform_mesh** out);
+
+typedef enum isoform_domain_kind {
+  ISOFORM_DOMAIN_BOX = 0,      /* the grid's domain itself */
+  ISOFORM_DOMAIN_SPHERICAL = 1 /* (x,y,z) = centre + (u cos v, u sin v cos w, u sin v sin w) */
+} isoform_domain_kind;
+
+typedef struct isoform_boxes_options {
+  int q[3];             /* q_x, q_y, q_z (or q_u, q_v, q_w): subvolumes per axis, >= 1; default 5, 5, 5 */
+  double gap[3];        /* alpha per axis: gap between subvolumes over their edge, >= 0; default 1, 1, 1 */
+  int face_cells[2];    /* k, l: each face is a k x l grid of Gouraud cells; default 1, 1 (corners only) */
+  int centroid_lines;   /* 1: edges between centroids of neighbouring subvolumes; default 0 */
+  int domain;           /* isoform_domain_kind; default ISOFORM_DOMAIN_BOX */
+  double uvw_min[3];    /* spherical: u, v, w lower limits; default 0, 0, 0 */
+  double uvw_max[3];    /* spherical: upper limits (u in world units, v and w in
+                           radians); default 1, pi, 3 pi / 2 (Figure 2.4) */
+  double centre[3];     /* spherical: world position of u = 0; default 0, 0, 0 */
+  isoform_colour_options colour; /* default green-white, range over all face points */
+} isoform_boxes_options;
+
+ISOFORM_API void isoform_boxes_options_default(isoform_boxes_options* options);
+
+/* The domain-subdivision method of Section 2.2 as a new mesh: subvolume
+ * V_rst has corner x_r = x_min + r (1 + alpha_x) dx, dx = (x_max - x_min) /
+ * (q_x + alpha_x (q_x - 1)) (likewise y, z; over uvw for a spherical domain),
+ * and six faces of (k+1)(l+1) vertices each, coloured from the trilinear
+ * value there, with outward normals. 6 q_x q_y q_z k l quads, 2 triangles
+ * each. Errors: no such grid, q < 1 (q = 0), a negative gap, a spherical
+ * domain that leaves the grid's domain. */
+ISOFORM_API isoform_status isoform_boxes(const isoform_volume* volume, int grid,
+                                         const isoform_boxes_options* options, isoform_mesh** out);
+
+typedef struct isoform_stack_options {
+  int n[3];             /* n_x, n_y, n_z: cells of the evaluation grid, >= 1; default 8, 8, 8 */
+  double transparency;  /* t of Section 2.2 in [0, 1]: c_new = (1 - t) c_poly + t c_old,
+                           so alpha = 1 - t; default 0.5 */
+  double view[3];       /* viewing direction, world, from the eye into the scene,
+                           not zero; default -1, -1, -1 */
+  isoform_colour_options colour; /* default viridis, range over the grid points */
+} isoform_stack_options;
+
+ISOFORM_API void isoform_stack_options_default(isoform_stack_options* options);
+
+/* The transparency method of Section 2.2 as a new mesh: the rectangles
+ * parallel to the xy-, xz- and yz-planes of an (n_x+1)(n_y+1)(n_z+1) grid
+ * over the domain, 3 n_x n_y n_z + n_x n_y + n_x n_z + n_y n_z of them, 4
+ * own vertices and 2 triangles each, coloured with alpha = 1 - t, and
+ * ordered back to front along view: by the depth of each rectangle's corner
+ * nearest the eye, farthest first. Triangles 2r and 2r+1 are rectangle r. */
+ISOFORM_API isoform_status isoform_stack(const isoform_volume* volume, int grid,
+                                         const isoform_stack_options* options, isoform_mesh** out);
+
+/* Colours of a mesh made above: out must hold 4 * vertex_count bytes (red,
+ * green, blue, alpha per vertex). A mesh without colours copies nothing. */
+ISOFORM_API size_t isoform_mesh_color_count(const isoform_mesh* mesh);
+ISOFORM_API isoform_status isoform_mesh_copy_colors(const isoform_mesh* mesh, uint8_t* out);
+/* Loose edges (curve networks, centroid lines, the domain box): out must
+ * hold 2 * edge_count int32 vertex indices. */
+ISOFORM_API size_t isoform_mesh_edge_count(const isoform_mesh* mesh);
+ISOFORM_API isoform_status isoform_mesh_copy_edges(const isoform_mesh* mesh, int32_t* out);
+
+ISOFORM_API int isoform_image_width(const isoform_image* image);
+ISOFORM_API int isoform_image_height(const isoform_image* image);
+/* The value range behind the colours (f_min, f_max of Section 2.2). */
+ISOFORM_API isoform_status isoform_image_range(const isoform_image* image, double* f_min,
+                                               double* f_max);
+/* out must hold 4 * width * height bytes: RGBA, rows top to bottom. */
+ISOFORM_API isoform_status isoform_image_copy_rgba(const isoform_image* image, uint8_t* out);
+/* out must hold width * height floats: the sampled value of each pixel of the
+ * slice, NaN for the colour bar and its margin. */
+ISOFORM_API isoform_status isoform_image_copy_values(const isoform_image* image, float* out);
+/* Writes the image as an 8-bit RGBA PNG (libpng), with the value range in a
+ * text chunk; to a temporary file beside path, then renamed. */
+ISOFORM_API isoform_status isoform_image_save_png(const isoform_image* image, const char* path);
+ISOFORM_API void isoform_image_free(isoform_image* image);
 
 #ifdef __cplusplus
 }

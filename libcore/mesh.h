@@ -41,14 +41,17 @@ struct Mesh {
   std::vector<int32_t> triangles; // 3 vertex indices per triangle
   std::vector<int32_t> neighbours;// 3 per triangle: across edge (v_i, v_i+1), -1 if none
   std::vector<int32_t> parts;     // 1 per triangle, 0 = largest part
+  // Optional, empty by default (the PLY writer adds what is present):
+  std::vector<uint8_t> colors;    // 4 per vertex: red, green, blue, alpha (0..255)
+  std::vector<int32_t> edges;     // 2 vertex indices per loose line segment
   int32_t part_count = 0;
   MeshStats stats;
   ContourStats contour;
   VertexCurvature curvature;      // empty until Chapter 4 has run (curvature/)
-  std::vector<uint8_t> colors;    // 4 per vertex (red, green, blue, alpha), or empty
 
   size_t vertex_count() const { return points.size() / 3; }
   size_t triangle_count() const { return triangles.size() / 3; }
+  size_t edge_count() const { return edges.size() / 2; }
 };
 
 }  // namespace isoform

@@ -64,6 +64,14 @@ class BrickSource {
   virtual ~BrickSource() = default;
   virtual size_t brick_count() const = 0;
   virtual void fill(size_t index, Brick& out) const = 0;
+  // A dense resample of the region: out[(k * dims[1] + j) * dims[0] + i]
+  // becomes the sample at lo + (i, j, k), x fastest. The default visits
+  // every brick and copies the samples each holds (its cells' corners);
+  // samples no brick holds, or only as undefined, become `outside`. A
+  // sparse source overrides it to read its tree directly (tiles and
+  // background included). Thread-safe like fill().
+  virtual void fill_region(const Index3& lo, const Index3& dims, float outside,
+                           std::vector<float>& out) const;
 };
 
 enum class GridClass { Other = 0, LevelSet = 1, Fog = 2 };

@@ -31,6 +31,10 @@ class LeafBricks : public BrickSource {
   // a block without a leaf lies in one tile or the background, so one value
   // stands for all of it.
   void fill(size_t index, Brick& out) const override;
+  // Reads the tree directly: every sample of the box, active or not, from
+  // leaves, tiles or the background (`outside` is not needed). Thread-safe.
+  void fill_region(const Index3& lo, const Index3& dims, float outside,
+                   std::vector<float>& out) const override;
 
   const openvdb::FloatGrid::ConstPtr& grid() const { return grid_; }
   // Brick origins (the first cell of each), sorted and unique.

@@ -136,17 +136,4 @@ isoform_status isoform_mesh_copy_curvature_flags(const isoform_mesh* mesh, uint8
   });
 }
 
-int isoform_mesh_has_colors(const isoform_mesh* mesh) { return mesh && !mesh->mesh.colors.empty() ? 1 : 0; }
-
-isoform_status isoform_mesh_copy_colors(const isoform_mesh* mesh, uint8_t* out) {
-  return guarded([&] {
-    if (!mesh || !out) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_copy_colors: NULL argument");
-    const std::vector<uint8_t>& c = mesh->mesh.colors;
-    if (c.empty() && mesh->mesh.vertex_count() > 0)
-      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_copy_colors: the mesh has no colours");
-    if (!c.empty()) std::memcpy(out, c.data(), c.size());
-    return ISOFORM_OK;
-  });
-}
-
 }  // extern "C"

@@ -39,20 +39,23 @@ void check_sizes(const Mesh& mesh, const std::string& path) {
   }
   if (!mesh.curvature.empty() && mesh.curvature.k1.size() != mesh.vertex_count())
     refuse("the curvature arrays do not match the vertices");
-  if (!mesh.colors.empty() && mesh.colors.size() != 4 * mesh.vertex_count())
-    refuse("the colours do not match the vertices");
+  if (!mesh.colors.empty() && mesh.colors.size() != 4 * mesh.vertex_count()) {
+    refuse("there are " + std::to_string(mesh.colors.size() / 4) + " colours for " +
+           std::to_string(mesh.vertex_count()) + " vertices");
+  }
+  if (mesh.edges.size() % 2 != 0) refuse("the edges are not whole pairs");
   if (!mesh.parts.empty() && mesh.parts.size() != mesh.triangle_count()) {
     refuse("there are " + std::to_string(mesh.parts.size()) + " parts for " +
            std::to_string(mesh.triangle_count()) + " triangles");
   }
 }
 
-void check_indices(const Mesh& mesh, const std::string& path) {
-  const size_t vertices = mesh.vertex_count();
-  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-    int32_t vertex = mesh.triangles[i];
+void check_indices(const std::vector<int32_t>& indices, size_t per_item, const char* item,
+                   size_t vertices, const std::string& path) {
+  for (size_t i = 0; i < indices.size(); ++i) {
+    int32_t vertex = indices[i];
     if (vertex < 0 || size_t(vertex) >= vertices) {
-      throw InvalidArgument("cannot save " + path + ": triangle " + std::to_string(i / 3) +
+      throw InvalidArgument("cannot save " + path + ": " + item + " " + std::to_string(i / per_item) +
                             " refers to vertex " + std::to_string(vertex) + " but there are " +
                             std::to_string(vertices) + " vertices");
     }
@@ -72,7 +75,8 @@ void check_format_limits(const Mesh& mesh, Format format, const std::string& pat
 void save_mesh(const Mesh& mesh, const std::string& path) {
   Format format = format_of(path);
   check_sizes(mesh, path);
-  check_indices(mesh, path);
+  check_indices(mesh.triangles, 3, "triangle", mesh.vertex_count(), path);
+  check_indices(mesh.edges, 2, "edge", mesh.vertex_count(), path);
   check_format_limits(mesh, format, path);
   meshio::AtomicFile file(path);
   switch (format) {

@@ -14,9 +14,12 @@ namespace isoform {
 // Writes mesh to path in the format named by its extension (.ply, .obj, .stl;
 // case-insensitive):
 // - PLY: binary little endian; float x y z (and nx ny nz when mesh.normals is
-//   not empty) per vertex; uchar/int vertex_indices (and int part when
-//   mesh.parts is not empty) per face.
-// - OBJ: v, vn (when normals exist) and 1-based f lines; parts are not kept.
+//   not empty, uchar red green blue alpha when mesh.colors is not empty) per
+//   vertex; uchar/int vertex_indices (and int part when mesh.parts is not
+//   empty) per face; an element edge (int vertex1 vertex2) when mesh.edges
+//   is not empty.
+// - OBJ: v, vn (when normals exist), 1-based f and l lines; parts and colours
+//   are not kept.
 // - STL: binary, one facet normal computed from each triangle; vertex normals
 //   and parts are not kept.
 // The save is atomic: the data go to PATH.tmp-<random> in the same directory,

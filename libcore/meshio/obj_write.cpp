@@ -51,6 +51,20 @@ void write_faces(const Mesh& mesh, AtomicFile& file) {
   }
 }
 
+// "l a b" per loose line segment.
+void write_lines(const Mesh& mesh, AtomicFile& file) {
+  std::string line;
+  for (size_t e = 0; e < mesh.edge_count(); ++e) {
+    line = "l";
+    for (size_t k = 0; k < 2; ++k) {
+      line += ' ';
+      append_number(line, static_cast<long long>(mesh.edges[2 * e + k]) + 1);
+    }
+    line += '\n';
+    file.write(line);
+  }
+}
+
 }  // namespace
 
 void write_obj(const Mesh& mesh, AtomicFile& file) {
@@ -58,6 +72,7 @@ void write_obj(const Mesh& mesh, AtomicFile& file) {
   write_triples(file, "v", mesh.points);
   write_triples(file, "vn", mesh.normals);
   write_faces(mesh, file);
+  write_lines(mesh, file);
 }
 
 }  // namespace isoform::meshio

@@ -1,7 +1,13 @@
 // Writing binary little-endian PLY: compact, exact for float32 points, and
 // read by every mesh tool. Records are assembled byte by byte in little-endian
 // order, so the file does not depend on the host.
+//
+// A vertex record is x y z followed by the optional vertex properties that
+// the mesh carries (vertex_properties below): each is a group of scalar PLY
+// properties read from one array of the mesh, written only when that array
+// is not empty. A new per-vertex array is one more entry in that list.
 #include <string>
+#include <vector>
 
 #include "byte_order.h"
 #include "formats.h"
@@ -9,13 +15,35 @@
 namespace isoform::meshio {
 namespace {
 
-// Per-vertex curvature (Chapter 4), in this order after the normals.
-const char* const kCurvatureProperties[] = {"k1",  "k2",  "mean", "gauss", "absolute", "d1x",
-                                            "d1y", "d1z", "d2x",  "d2y",   "d2z"};
-constexpr size_t kCurvatureCount = 11;
+// A group of per-vertex PLY properties stored together in one mesh array.
+struct VertexProperty {
+  const char* type;                 // PLY scalar type: "float" or "uchar"
+  std::vector<const char*> names;   // one PLY property per component
+  const void* data;                 // names.size() values per vertex, or null
+  size_t size() const { return std::string(type) == "float" ? 4 : 1; }
+};
 
-std::string header_text(const Mesh& mesh) {
-  bool normals = !mesh.normals.empty();
+std::vector<VertexProperty> vertex_properties(const Mesh& mesh) {
+  std::vector<VertexProperty> out;
+  if (!mesh.normals.empty()) out.push_back({"float", {"nx", "ny", "nz"}, mesh.normals.data()});
+  // Per-vertex curvature (Chapter 4), after the normals.
+  const VertexCurvature& c = mesh.curvature;
+  if (!c.empty()) {
+    out.push_back({"float", {"k1"}, c.k1.data()});
+    out.push_back({"float", {"k2"}, c.k2.data()});
+    out.push_back({"float", {"mean"}, c.mean.data()});
+    out.push_back({"float", {"gauss"}, c.gauss.data()});
+    out.push_back({"float", {"absolute"}, c.absolute.data()});
+    out.push_back({"float", {"d1x", "d1y", "d1z"}, c.d1.data()});
+    out.push_back({"float", {"d2x", "d2y", "d2z"}, c.d2.data()});
+    out.push_back({"uchar", {"curvature_flags"}, c.flags.data()});
+  }
+  if (!mesh.colors.empty())
+    out.push_back({"uchar", {"red", "green", "blue", "alpha"}, mesh.colors.data()});
+  return out;
+}
+
+std::string header_text(const Mesh& mesh, const std::vector<VertexProperty>& properties) {
   bool parts = !mesh.parts.empty();
   std::string text =
       "ply\n"
@@ -23,47 +51,43 @@ std::string header_text(const Mesh& mesh) {
       "comment isoform\n";
   text += "element vertex " + std::to_string(mesh.vertex_count()) + "\n";
   text += "property float x\nproperty float y\nproperty float z\n";
-  if (normals) text += "property float nx\nproperty float ny\nproperty float nz\n";
-  if (!mesh.curvature.empty())
-    for (const char* name : kCurvatureProperties) text += std::string("property float ") + name + "\n";
-  if (!mesh.curvature.empty()) text += "property uchar curvature_flags\n";
-  if (!mesh.colors.empty())
-    text += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+  for (const VertexProperty& p : properties)
+    for (const char* name : p.names) text += std::string("property ") + p.type + " " + name + "\n";
   text += "element face " + std::to_string(mesh.triangle_count()) + "\n";
   text += "property list uchar int vertex_indices\n";
   if (parts) text += "property int part\n";
+  if (!mesh.edges.empty()) {
+    text += "element edge " + std::to_string(mesh.edge_count()) + "\n";
+    text += "property int vertex1\nproperty int vertex2\n";
+  }
   text += "end_header\n";
   return text;
 }
 
-// The curvature values of vertex v in kCurvatureProperties order.
-void curvature_record(const VertexCurvature& c, size_t v, float out[kCurvatureCount]) {
-  const float head[5] = {c.k1[v], c.k2[v], c.mean[v], c.gauss[v], c.absolute[v]};
-  for (size_t k = 0; k < 5; ++k) out[k] = head[k];
-  for (size_t k = 0; k < 3; ++k) {
-    out[5 + k] = c.d1[3 * v + k];
-    out[8 + k] = c.d2[3 * v + k];
+// Appends vertex v's components of p to record at offset; returns the new offset.
+size_t store_property(const VertexProperty& p, size_t v, unsigned char* record, size_t offset) {
+  const size_t n = p.names.size();
+  for (size_t k = 0; k < n; ++k) {
+    if (p.size() == 4) {
+      store_float_le(record + offset, static_cast<const float*>(p.data)[n * v + k]);
+    } else {
+      record[offset] = static_cast<const unsigned char*>(p.data)[n * v + k];
+    }
+    offset += p.size();
   }
+  return offset;
 }
 
-void write_vertices(const Mesh& mesh, AtomicFile& file) {
-  const bool normals = !mesh.normals.empty(), curvature = !mesh.curvature.empty(), colors = !mesh.colors.empty();
-  // x y z, then nx ny nz, the curvature and its flags, and the colour, each when present
-  unsigned char record[24 + 4 * kCurvatureCount + 1 + 4];
+void write_vertices(const Mesh& mesh, const std::vector<VertexProperty>& properties,
+                    AtomicFile& file) {
+  size_t record_size = 12;
+  for (const VertexProperty& p : properties) record_size += p.size() * p.names.size();
+  std::vector<unsigned char> record(record_size);
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    size_t at = 0;
-    for (size_t k = 0; k < 3; ++k, at += 4) store_float_le(record + at, mesh.points[3 * v + k]);
-    if (normals)
-      for (size_t k = 0; k < 3; ++k, at += 4) store_float_le(record + at, mesh.normals[3 * v + k]);
-    if (curvature) {
-      float values[kCurvatureCount];
-      curvature_record(mesh.curvature, v, values);
-      for (float x : values) store_float_le(record + at, x), at += 4;
-      record[at++] = mesh.curvature.flags[v];
-    }
-    if (colors)
-      for (size_t k = 0; k < 4; ++k) record[at++] = mesh.colors[4 * v + k];
-    file.write(record, at);
+    for (size_t k = 0; k < 3; ++k) store_float_le(record.data() + 4 * k, mesh.points[3 * v + k]);
+    size_t offset = 12;
+    for (const VertexProperty& p : properties) offset = store_property(p, v, record.data(), offset);
+    file.write(record.data(), record_size);
   }
 }
 
@@ -78,12 +102,23 @@ void write_faces(const Mesh& mesh, AtomicFile& file) {
   }
 }
 
+void write_edges(const Mesh& mesh, AtomicFile& file) {
+  unsigned char record[8];
+  for (size_t e = 0; e < mesh.edge_count(); ++e) {
+    store_int32_le(record, mesh.edges[2 * e]);
+    store_int32_le(record + 4, mesh.edges[2 * e + 1]);
+    file.write(record, 8);
+  }
+}
+
 }  // namespace
 
 void write_ply(const Mesh& mesh, AtomicFile& file) {
-  file.write(header_text(mesh));
-  write_vertices(mesh, file);
+  const std::vector<VertexProperty> properties = vertex_properties(mesh);
+  file.write(header_text(mesh, properties));
+  write_vertices(mesh, properties, file);
   write_faces(mesh, file);
+  write_edges(mesh, file);
 }
 
 }  // namespace isoform::meshio

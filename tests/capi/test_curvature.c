@@ -46,14 +46,14 @@ static void test_sphere(void) {
   double h_err = 0, k_err = 0;
   if (!m) return;
   n = isoform_mesh_vertex_count(m);
-  CHECK(isoform_mesh_has_curvature(m) == 0 && isoform_mesh_has_colors(m) == 0);
+  CHECK(isoform_mesh_has_curvature(m) == 0 && isoform_mesh_color_count(m) == 0);
   h = malloc(n * sizeof *h);
   CHECK(isoform_mesh_copy_curvature(m, ISOFORM_CURVATURE_MEAN, h) == ISOFORM_ERR_INVALID_ARGUMENT);
   CHECK(strstr(isoform_last_error(), "no curvature") != NULL);
   memset(&progress, 0, sizeof progress);
   CHECK(isoform_curvature(m, NULL, &progress) == ISOFORM_OK);
   CHECK(progress.stage == ISOFORM_STAGE_DONE);
-  CHECK(isoform_mesh_has_curvature(m) == 1 && isoform_mesh_has_colors(m) == 1);
+  CHECK(isoform_mesh_has_curvature(m) == 1 && isoform_mesh_color_count(m) == n);
   CHECK(isoform_mesh_curvature_stats(m, &s) == ISOFORM_OK);
   CHECK(s.method == ISOFORM_CURVATURE_QUARTIC && s.vertices == (long long)n);
   CHECK(s.failed == 0 && s.isolated == 0 && s.boundary == 0);
