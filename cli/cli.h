@@ -61,5 +61,6 @@ Command add_info_command(CLI::App& parent);
 Command add_contour_command(CLI::App& parent);
 Command add_convert_command(CLI::App& parent);
 Command add_pipeline_command(CLI::App& parent);
+Command add_curvature_volume_command(CLI::App& parent);
 
 }  // namespace isoform::cli

@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", version_text);
   const std::vector<Command> commands = {
       isoform::cli::add_info_command(app), isoform::cli::add_contour_command(app),
-      isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app)};
+      isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app),
+      isoform::cli::add_curvature_volume_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
