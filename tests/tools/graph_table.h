@@ -38,7 +38,7 @@ struct Errors {
 // The errors of one column on one function, in double precision samples.
 Errors measure(const Function& f, Column column);
 
-// The seed's printed numbers (the damaged Table 4.2, as it reads).
+// Points per axis of the seed's grid.
 constexpr int kGridPoints = 26;
 
 }  // namespace isoform::table42
