@@ -152,6 +152,13 @@ static void case_refusals(void) {
     CHECK(fabs(s.grids[0].min) < 1e-6 && fabs(s.grids[0].max) < 1e-6);
   }
   CHECK(strcmp(isoform_graph_fit_name(99), "unknown") == 0);
+  {
+    /* A cancel flag set before the call: ISOFORM_ERR_CANCELLED, no result. */
+    isoform_progress progress = {0.0f, 0, 1};
+    isoform_volume* cancelled = (isoform_volume*)1;
+    CHECK(isoform_volume_curvature(v, 0, NULL, &progress, &cancelled) == ISOFORM_ERR_CANCELLED);
+    CHECK(cancelled == NULL);
+  }
   isoform_volume_free(out);
   isoform_volume_free(v);
 }

@@ -3,6 +3,8 @@
 // even where the result equals the background 0.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "libcore/curvature/graph_volume.h"
 #include "libcore/errors.h"
 #include "test_support.h"
@@ -75,6 +77,31 @@ TEST(GraphCurvatureWrite, ResultGridsKeepTheInputsActiveVoxels) {
   EXPECT_NEAR(k1->tree().getValue(openvdb::Coord(21, 0, 0)), exact.k1, 1e-4);
   // The result remembers its source: writing over it is refused.
   EXPECT_THROW(write_vdb(*result, in), InvalidArgument);
+}
+
+TEST(GraphCurvatureWrite, SameBitsOnOneAndTwoThreads) {
+  TempDir dir;
+  const std::string in = dir.file("in.vdb");
+  test::write_grids(in, {sparse_input()});
+  const auto grid = open_vdb(in)->load(0);
+  std::vector<std::vector<float>> runs;
+  for (int threads : {1, 2}) {
+    GraphVolumeOptions o;
+    o.threads = threads;
+    const auto result = graph_curvature_volume(*grid, in, o, Progress(nullptr));
+    std::vector<float> all;
+    Brick brick;
+    for (int g = 0; g < kGraphGrids; ++g) {
+      const auto r = result->load(g);
+      for (size_t b = 0; b < r->bricks->brick_count(); ++b) {
+        r->bricks->fill(b, brick);
+        all.insert(all.end(), brick.samples.begin(), brick.samples.end());
+      }
+    }
+    runs.push_back(all);
+  }
+  ASSERT_EQ(runs[0].size(), runs[1].size());
+  EXPECT_EQ(std::memcmp(runs[0].data(), runs[1].data(), runs[0].size() * sizeof(float)), 0);
 }
 
 TEST(GraphCurvatureWrite, ActiveBricksMarkActiveVoxelsAsDefined) {
