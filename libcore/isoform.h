@@ -521,6 +521,84 @@ ISOFORM_API isoform_status isoform_image_copy_values(const isoform_image* image,
 ISOFORM_API isoform_status isoform_image_save_png(const isoform_image* image, const char* path);
 ISOFORM_API void isoform_image_free(isoform_image* image);
 
+/* ------------------------------------------------------------------ */
+/* Curvature of trivariate graphs                                     */
+/* ------------------------------------------------------------------ */
+
+/* The graph of a grid's f, (x, y, z, f(x, y, z)) in four dimensions, is a
+ * hypersurface with three principal curvatures k1 >= k2 >= k3 at each point
+ * (Hamann 1991, Section 4.3); H is their mean, K their product. World
+ * coordinates are used: the grid's transform maps sample positions, and f's
+ * values count as lengths along the fourth axis, so curvatures are in
+ * inverse world units and do not change when the grid is rotated or moved. */
+
+typedef enum isoform_volume_curvature_method {
+  ISOFORM_VOLUME_CURVATURE_DEFAULT = 0, /* degree-6 least-squares fit of f on a
+                                           7x7x7 box (moved inward at the data's
+                                           edge), exact 4.36 curvature of the fit */
+  ISOFORM_VOLUME_CURVATURE_SEED = 1     /* the seed's method: 14-point platelet,
+                                           tangent space of the central-difference
+                                           gradient, 6x6 normal equations (4.48) */
+} isoform_volume_curvature_method;
+
+/* Which fit gave a point its curvature; counted in the stats. */
+typedef enum isoform_graph_fit {
+  ISOFORM_GRAPH_FIT_JET_CENTRED = 0,     /* degree 6 on the centred 7x7x7 box */
+  ISOFORM_GRAPH_FIT_JET_SHIFTED = 1,     /* degree 6 on a box moved or cut where
+                                            the defined samples end */
+  ISOFORM_GRAPH_FIT_JET_REDUCED = 2,     /* degree 2 on a box with undefined samples */
+  ISOFORM_GRAPH_FIT_PLATELET = 3,        /* the seed's fit on the full platelet */
+  ISOFORM_GRAPH_FIT_PLATELET_PARTIAL = 4, /* the seed's fit on a one-sided platelet */
+  ISOFORM_GRAPH_FIT_NONE = 5,            /* too few defined neighbours for any fit:
+                                            all five results are 0 */
+  ISOFORM_GRAPH_FIT_COUNT = 6
+} isoform_graph_fit;
+
+typedef struct isoform_volume_curvature_options {
+  int method;  /* isoform_volume_curvature_method; default ..._DEFAULT */
+  int threads; /* worker threads; 0 (default) = all cores, 1 = serial */
+} isoform_volume_curvature_options;
+
+ISOFORM_API void isoform_volume_curvature_options_default(isoform_volume_curvature_options* options);
+
+/* Distribution of one result grid over its active voxels. Percentiles are
+ * nearest-rank (p50 is the median). */
+typedef struct isoform_curvature_summary {
+  double min, max, mean;
+  double p01, p05, p25, p50, p75, p95, p99;
+} isoform_curvature_summary;
+
+/* Facts about a curvature result. grids[] follows the result's grid order:
+ * mean, gauss, k1, k2, k3. fits[f] counts the points whose curvature came
+ * from fit f (an isoform_graph_fit); they add up to points. */
+typedef struct isoform_volume_curvature_stats {
+  int method;                                 /* the method used */
+  long long points;                           /* active voxels with a result */
+  long long fits[ISOFORM_GRAPH_FIT_COUNT];
+  isoform_curvature_summary grids[5];
+} isoform_volume_curvature_stats;
+
+/* Principal curvatures of the graph of grid `grid` (from
+ * isoform_volume_find_grid) at each active voxel (dense arrays: every sample),
+ * from active neighbours only (one-sided at the data's edge). *out gets a new
+ * volume of five float grids "mean", "gauss", "k1", "k2", "k3" (class other,
+ * the input's transform), active at exactly those voxels, zeros included;
+ * isoform_volume_save_vdb writes it and refuses the input's path. Non-scalar
+ * grids give ISOFORM_ERR_UNSUPPORTED. Linear in the active voxels; the same
+ * bits for any thread count. options and progress may be NULL (defaults). */
+ISOFORM_API isoform_status isoform_volume_curvature(const isoform_volume* volume, int grid,
+                                                    const isoform_volume_curvature_options* options,
+                                                    isoform_progress* progress, isoform_volume** out);
+
+/* The stats of a volume made by isoform_volume_curvature; other volumes give
+ * ISOFORM_ERR_INVALID_ARGUMENT. */
+ISOFORM_API isoform_status isoform_volume_curvature_stats_get(const isoform_volume* result,
+                                                              isoform_volume_curvature_stats* out);
+
+/* A short constant description of an isoform_graph_fit value, such as
+ * "seed's platelet fit"; "unknown" for others. */
+ISOFORM_API const char* isoform_graph_fit_name(int fit);
+
 #ifdef __cplusplus
 }
 #endif

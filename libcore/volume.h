@@ -84,6 +84,14 @@ struct ScalarGrid {
   double background = 0.0;
   double value_min = 0.0, value_max = 0.0;  // over active values
   std::shared_ptr<const BrickSource> bricks;
+  // The same samples with `defined` set exactly at the active voxels (a
+  // sparse file's active set), or null when every defined sample is active
+  // (dense arrays). The curvature of graphs reads this one when it is set.
+  std::shared_ptr<const BrickSource> active_bricks;
+  // True when the defined own samples of `bricks` are the grid's active set
+  // even where they equal the background (curvature results, where 0 is a
+  // value): writers keep them active instead of dropping background values.
+  bool defined_is_active = false;
 };
 
 // Facts about a grid of a volume file, known before or after loading.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "active_bricks.h"
 #include "leaf_bricks.h"
 #include "libcore/errors.h"
 #include "vdb_convert.h"
@@ -163,6 +164,7 @@ std::shared_ptr<const ScalarGrid> VdbFile::load(int i) const {
   out->value_min = scan.min;
   out->value_max = scan.max;
   out->bricks = std::make_shared<LeafBricks>(grid);
+  out->active_bricks = std::make_shared<ActiveBricks>(grid);
   return out;
 }
 

@@ -43,7 +43,9 @@ openvdb::GridCPtrVec grids_of_vdb(const VdbFile& file) {
 }
 
 // A scalar grid of any other source, from its bricks: each brick's own
-// samples (its cells' lower corners) that differ from the background.
+// samples (its cells' lower corners) that differ from the background, or,
+// for grids whose defined samples are their active set (curvature results,
+// where 0 is a value), every defined own sample.
 openvdb::FloatGrid::Ptr grid_from_bricks(const ScalarGrid& source) {
   const float background = float(source.background);
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(background);
@@ -58,7 +60,7 @@ openvdb::FloatGrid::Ptr grid_from_bricks(const ScalarGrid& source) {
       for (int j = 0; j < brick.cells[1]; ++j)
         for (int i = 0; i < brick.cells[0]; ++i) {
           const float v = brick.value(i, j, k);
-          if (!brick.is_defined(i, j, k) || v == background) continue;
+          if (!brick.is_defined(i, j, k) || (v == background && !source.defined_is_active)) continue;
           access.setValueOn(
               openvdb::Coord(brick.origin[0] + i, brick.origin[1] + j, brick.origin[2] + k), v);
         }
