@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "../errors.h"
-#include "../topology.h"
 #include "merge.h"
 
 namespace isoform {
@@ -48,16 +47,15 @@ std::vector<BrickMesh> contour_bricks(const ScalarGrid& grid, double iso, Contou
   return out;
 }
 
-// Reverses triangles and normals as asked. In index space each triangle
-// winds counter-clockwise around the gradient; a mirroring transform
-// (negative determinant) reverses that in world space.
-void orient(Mesh& mesh, bool increasing, double determinant) {
-  const bool reverse = increasing == (determinant < 0);
-  if (reverse)
-    for (size_t t = 0; t < mesh.triangle_count(); ++t)
-      std::swap(mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]);
-  if (!increasing)
-    for (float& c : mesh.normals) c = -c;
+// In index space each triangle winds counter-clockwise around the
+// gradient (the cell method winds each polygon around increasing f, and so
+// does the tetra table); a mirroring transform (negative determinant)
+// reverses that in world space.
+MergeOrientation orientation(bool increasing, double determinant) {
+  MergeOrientation o;
+  o.reverse = increasing == (determinant < 0);
+  o.negate = !increasing;
+  return o;
 }
 
 // Vertices whose Zucker-Hummel estimate vanished (a flat 3x3x3 region) take
@@ -100,15 +98,11 @@ Mesh contour_in_arena(const ScalarGrid& grid, const ContourOptions& options, con
   progress.stage(ISOFORM_STAGE_CONTOUR);
   std::vector<BrickMesh> bricks = contour_bricks(grid, iso, options.method, progress);
   progress.stage(ISOFORM_STAGE_MERGE);
-  merge_bricks(bricks, mesh);
-  bricks.clear();
   const bool increasing = wants_increasing(grid, options.orientation);
-  // The cell method winds each polygon around increasing f, and so does the
-  // tetra table: both are made that way in index space.
-  orient(mesh, increasing, grid.index_to_world.determinant());
-  progress.stage(ISOFORM_STAGE_TOPOLOGY);
-  compute_topology(mesh);
-  repair_normals(mesh);
+  const bool missing =
+      merge_bricks(bricks, orientation(increasing, grid.index_to_world.determinant()), mesh, progress);
+  bricks.clear();
+  if (missing) repair_normals(mesh);
   progress.stage(ISOFORM_STAGE_DONE);
   return mesh;
 }
