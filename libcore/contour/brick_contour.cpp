@@ -57,12 +57,22 @@ void BrickContourer::prepare(const Brick& brick) {
   for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
   const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
   g_.resize(count);
+  all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
+  double* g = g_.data();
   for (int k = 0; k < n_[2]; ++k)
-    for (int j = 0; j < n_[1]; ++j)
-      for (int i = 0; i < n_[0]; ++i) {
-        const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
-        g_[at] = brick.is_defined(i, j, k) ? moved(i, j, k) : std::numeric_limits<double>::quiet_NaN();
+    for (int j = 0; j < n_[1]; ++j) {
+      const size_t row = brick.at(0, j, k);
+      const float* f = &brick.samples[row];
+      const uint8_t* def = all_defined_ ? nullptr : &brick.defined[row];
+      for (int i = 0; i < n_[0]; ++i, ++g) {
+        if (def && !def[i]) {
+          *g = std::numeric_limits<double>::quiet_NaN();
+          continue;
+        }
+        const double v = double(f[i]) - iso_;
+        *g = v != 0.0 ? v : moved(i, j, k);
       }
+    }
 }
 
 bool BrickContourer::crosses() const {
@@ -75,19 +85,29 @@ bool BrickContourer::crosses() const {
 }
 
 bool BrickContourer::gather(int i, int j, int k, double g[8]) const {
-  for (int c = 0; c < 8; ++c) {
-    const size_t at = (size_t(k + (c >> 2)) * size_t(n_[1]) + size_t(j + ((c >> 1) & 1))) * size_t(n_[0]) +
-                      size_t(i + (c & 1));
-    g[c] = g_[at];
+  const size_t n0 = size_t(n_[0]), n01 = n0 * size_t(n_[1]);
+  const double* at = &g_[size_t(k) * n01 + size_t(j) * n0 + size_t(i)];
+  g[0] = at[0];
+  g[1] = at[1];
+  g[2] = at[n0];
+  g[3] = at[n0 + 1];
+  g[4] = at[n01];
+  g[5] = at[n01 + 1];
+  g[6] = at[n01 + n0];
+  g[7] = at[n01 + n0 + 1];
+  if (all_defined_) return true;
+  for (int c = 0; c < 8; ++c)
     if (std::isnan(g[c])) return false;
-  }
   return true;
 }
 
 const Vec3d& BrickContourer::gradient(int i, int j, int k) {
   const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
   if (!has_grad_[at]) {
-    grad_[at] = zucker_hummel(*brick_, i, j, k);
+    const Brick& b = *brick_;
+    const Index3 d = b.dims();
+    grad_[at] = all_defined_ ? zucker_hummel_inside(&b.samples[b.at(i, j, k)], size_t(d[0]), size_t(d[0]) * size_t(d[1]))
+                             : zucker_hummel(b, i, j, k);
     has_grad_[at] = 1;
   }
   return grad_[at];
@@ -104,9 +124,15 @@ int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
 }
 
 bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
+  out = BrickMesh();
   prepare(brick);
   if (!crosses()) return false;
-  out_ = &out;
+  out_ = &work_;
+  work_.points.clear();
+  work_.gradients.clear();
+  work_.triangles.clear();
+  work_.shared.clear();
+  work_.stats = ContourStats();
   const size_t count = g_.size();
   grad_.resize(count);
   has_grad_.assign(count, 0);
@@ -120,16 +146,30 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
         for (int c = 0; c < 8; ++c) above |= (g[c] > 0) << c;
         if (above == 0 || above == 255) continue;
         if (method_ == ContourMethod::Cells)
-          contour_cell_trilinear(i, j, k, g);
+          contour_cell_trilinear(i, j, k, g, above);
         else
           contour_cell_tetra(i, j, k, g);
       }
+  out.points.assign(work_.points.begin(), work_.points.end());
+  out.gradients.assign(work_.gradients.begin(), work_.gradients.end());
+  out.triangles.assign(work_.triangles.begin(), work_.triangles.end());
+  out.shared.assign(work_.shared.begin(), work_.shared.end());
+  out.stats = work_.stats;
+  out_ = nullptr;
   return true;
 }
 
-int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
-  // Canonical direction and key sample, so that every cell (and brick) that
-  // uses this edge computes the same point from the same two values.
+namespace {
+
+// For the edge between corners p and q of a cell (axis edge, face diagonal
+// or cell diagonal): the canonical direction and the corner and slot of its
+// key, so that every cell (and brick) that uses the edge computes the same
+// point from the same two values.
+struct EdgeWay {
+  uint8_t start, end, slot, key_corner;
+};
+
+EdgeWay edge_way(int p, int q) {
   const int diff = p ^ q;
   const int bits = (diff & 1) + ((diff >> 1) & 1) + ((diff >> 2) & 1);
   int start = p, end = q, slot = 0, key_corner = 0;
@@ -148,6 +188,38 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
     slot = 6;
     key_corner = 0;
   }
+  return {uint8_t(start), uint8_t(end), uint8_t(slot), uint8_t(key_corner)};
+}
+
+const EdgeWay& edge_way_table(int p, int q) {
+  struct Table {
+    EdgeWay way[8][8];
+    Table() {
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; ++b) way[a][b] = a == b ? EdgeWay{} : edge_way(a, b);
+    }
+  };
+  static const Table table;
+  return table.way[p][q];
+}
+
+// The corners of each of the 12 cell edges (cell_table.h), lower first.
+const std::array<int, 2>& cell_edge_corners(int e) {
+  struct Table {
+    std::array<int, 2> corners[12];
+    Table() {
+      for (int m = 0; m < 12; ++m) corners[m] = cell::edge_corners(m);
+    }
+  };
+  static const Table table;
+  return table.corners[e];
+}
+
+}  // namespace
+
+int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
+  const EdgeWay& way = edge_way_table(p, q);
+  const int start = way.start, end = way.end, slot = way.slot, key_corner = way.key_corner;
   const int kx = ci + (key_corner & 1), ky = cj + ((key_corner >> 1) & 1), kz = ck + (key_corner >> 2);
   const size_t at =
       ((size_t(kz) * size_t(n_[1]) + size_t(ky)) * size_t(n_[0]) + size_t(kx)) * size_t(slots_) + size_t(slot);
@@ -185,16 +257,20 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
   return id;
 }
 
-void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[8]) {
-  CellPolygons cp;
-  cell_polygons(g, cp);
-  out_->stats.ambiguous_faces += cp.ambiguous_lower_faces;
-  out_->stats.degenerate_saddles += cp.degenerate_lower_saddles;
+void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[8], int above) {
+  const CellPolygons* table = unambiguous_cell_polygons(above);
+  CellPolygons decided;
+  if (!table) {
+    cell_polygons(g, decided);
+    out_->stats.ambiguous_faces += decided.ambiguous_lower_faces;
+    out_->stats.degenerate_saddles += decided.degenerate_lower_saddles;
+  }
+  const CellPolygons& cp = table ? *table : decided;
   for (int p = 0; p < cp.count; ++p) {
     const CellPolygon& poly = cp.polygons[p];
     int32_t ids[12];
     for (int m = 0; m < poly.size; ++m) {
-      const std::array<int, 2> ec = cell::edge_corners(poly.edges[m]);
+      const std::array<int, 2>& ec = cell_edge_corners(poly.edges[m]);
       ids[m] = edge_vertex(i, j, k, ec[0], ec[1]);
     }
     std::vector<int32_t>& tri = out_->triangles;
@@ -243,15 +319,17 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
   return int32_t(out_->points.size() / 3 - 1);
 }
 
-double BrickContourer::triangle_area2(int32_t a, int32_t b, int32_t c) const {
-  const float* p = &out_->points[3 * size_t(a)];
-  const float* q = &out_->points[3 * size_t(b)];
-  const float* r = &out_->points[3 * size_t(c)];
-  const double u[3] = {double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2]};
-  const double w[3] = {double(r[0]) - p[0], double(r[1]) - p[1], double(r[2]) - p[2]};
+namespace {
+
+// Twice the squared area of the triangle (p, q, r), from float points.
+double area2(const double* p, const double* q, const double* r) {
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
   const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
   return x * x + y * y + z * z;
 }
+
+}  // namespace
 
 void BrickContourer::add_fan(const int32_t* ids, int n) {
   // NOTE: the apex whose smallest triangle is largest. Points on the edges
@@ -259,14 +337,19 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
   // many at edge midpoints), and a fan from a fixed corner would then make
   // zero-area triangles; among the n fans at least one avoids them.
   int best = 0;
-  double best_area = -1;
-  for (int apex = 0; apex < n && n > 3; ++apex) {
-    double smallest = HUGE_VAL;
-    for (int m = 1; m + 1 < n; ++m)
-      smallest = std::min(smallest, triangle_area2(ids[apex], ids[(apex + m) % n], ids[(apex + m + 1) % n]));
-    if (smallest > best_area) {
-      best_area = smallest;
-      best = apex;
+  if (n > 3) {
+    double p[12][3];
+    for (int m = 0; m < n; ++m)
+      for (int a = 0; a < 3; ++a) p[m][a] = double(out_->points[3 * size_t(ids[m]) + a]);
+    double best_area = -1;
+    for (int apex = 0; apex < n; ++apex) {
+      double smallest = HUGE_VAL;
+      for (int m = 1; m + 1 < n; ++m)
+        smallest = std::min(smallest, area2(p[apex], p[(apex + m) % n], p[(apex + m + 1) % n]));
+      if (smallest > best_area) {
+        best_area = smallest;
+        best = apex;
+      }
     }
   }
   std::vector<int32_t>& tri = out_->triangles;

@@ -26,7 +26,8 @@ struct BrickMesh {
 class BrickContourer {
  public:
   BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method);
-  // Appends nothing and returns false when no cell of the brick crosses.
+  // Fills out (exactly sized) from the brick; leaves it empty and returns
+  // false when no cell of the brick crosses.
   bool run(const Brick& brick, BrickMesh& out);
 
  private:
@@ -38,8 +39,7 @@ class BrickContourer {
   int32_t add_vertex(const Vec3d& index_pos, const Vec3d& grad);
   int32_t add_centroid(const int32_t* ids, int n);
   void add_fan(const int32_t* ids, int n);
-  double triangle_area2(int32_t a, int32_t b, int32_t c) const;
-  void contour_cell_trilinear(int i, int j, int k, const double g[8]);
+  void contour_cell_trilinear(int i, int j, int k, const double g[8], int above);
   void contour_cell_tetra(int i, int j, int k, const double g[8]);
   bool gather(int i, int j, int k, double g[8]) const;
 
@@ -48,7 +48,9 @@ class BrickContourer {
   ContourMethod method_;
   int slots_;
   const Brick* brick_ = nullptr;
-  BrickMesh* out_ = nullptr;
+  BrickMesh* out_ = nullptr;     // work_ while a brick is contoured
+  BrickMesh work_;               // grows to the largest brick, then is reused
+  bool all_defined_ = true;
   Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
   std::vector<double> g_;        // moved f - iso at the corner samples
   std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily

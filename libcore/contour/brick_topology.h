@@ -54,9 +54,15 @@ class BrickTopology {
               std::vector<SeamEdge>& seams);
 
  private:
-  void vertex_triangles(const int32_t* tris, size_t nt, size_t nv);
+  struct HalfEdge {
+    int32_t to;    // the local vertex it runs to
+    int32_t edge;  // 3 * local triangle + i
+  };
+  void half_edges(const int32_t* tris, size_t nt, size_t nv);
 
-  std::vector<int32_t> start_, around_, root_;
+  std::vector<int32_t> start_, root_;
+  std::vector<uint8_t> done_;  // per local edge: its neighbour is known
+  std::vector<HalfEdge> out_;  // by the vertex each starts from
 };
 
 }  // namespace isoform
