@@ -55,36 +55,42 @@ double BrickContourer::moved(int i, int j, int k) const {
 void BrickContourer::prepare(const Brick& brick) {
   brick_ = &brick;
   for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
+  if (n_[0] > 64) throw Unsupported("bricks of more than 63 cells along x");
   const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
   g_.resize(count);
+  above_.resize(size_t(n_[1]) * size_t(n_[2]));
+  undefined_.resize(above_.size());
   all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
+  const uint64_t full = n_[0] == 64 ? ~uint64_t(0) : (uint64_t(1) << n_[0]) - 1;
+  uint64_t any_above = 0, any_below = 0;
   double* g = g_.data();
   for (int k = 0; k < n_[2]; ++k)
     for (int j = 0; j < n_[1]; ++j) {
       const size_t row = brick.at(0, j, k);
       const float* f = &brick.samples[row];
       const uint8_t* def = all_defined_ ? nullptr : &brick.defined[row];
+      uint64_t above = 0, undefined = 0;
       for (int i = 0; i < n_[0]; ++i, ++g) {
         if (def && !def[i]) {
           *g = std::numeric_limits<double>::quiet_NaN();
+          undefined |= uint64_t(1) << i;
           continue;
         }
         const double v = double(f[i]) - iso_;
         *g = v != 0.0 ? v : moved(i, j, k);
+        above |= uint64_t(*g > 0) << i;
       }
+      const size_t r = size_t(k) * size_t(n_[1]) + size_t(j);
+      above_[r] = above;
+      undefined_[r] = undefined;
+      any_above |= above;
+      any_below |= full & ~above & ~undefined;
     }
+  any_above_ = any_above != 0;
+  any_below_ = any_below != 0;
 }
 
-bool BrickContourer::crosses() const {
-  bool pos = false, neg = false;
-  for (double v : g_) {
-    pos |= v > 0;
-    neg |= v < 0;
-  }
-  return pos && neg;
-}
-
-bool BrickContourer::gather(int i, int j, int k, double g[8]) const {
+void BrickContourer::gather(int i, int j, int k, double g[8]) const {
   const size_t n0 = size_t(n_[0]), n01 = n0 * size_t(n_[1]);
   const double* at = &g_[size_t(k) * n01 + size_t(j) * n0 + size_t(i)];
   g[0] = at[0];
@@ -95,10 +101,6 @@ bool BrickContourer::gather(int i, int j, int k, double g[8]) const {
   g[5] = at[n01 + 1];
   g[6] = at[n01 + n0];
   g[7] = at[n01 + n0 + 1];
-  if (all_defined_) return true;
-  for (int c = 0; c < 8; ++c)
-    if (std::isnan(g[c])) return false;
-  return true;
 }
 
 const Vec3d& BrickContourer::gradient(int i, int j, int k) {
@@ -126,7 +128,7 @@ int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
 bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
   out = BrickMesh();
   prepare(brick);
-  if (!crosses()) return false;
+  if (!any_above_ || !any_below_) return false;
   out_ = &work_;
   work_.points.clear();
   work_.gradients.clear();
@@ -137,19 +139,31 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
   grad_.resize(count);
   has_grad_.assign(count, 0);
   slot_vertex_.assign(count * size_t(slots_), -1);
+  const size_t n1 = size_t(n_[1]);
+  const uint64_t cell_bits = (uint64_t(1) << brick.cells[0]) - 1;  // lower corners of a row's cells
   double g[8];
   for (int k = 0; k < brick.cells[2]; ++k)
-    for (int j = 0; j < brick.cells[1]; ++j)
+    for (int j = 0; j < brick.cells[1]; ++j) {
+      // The four rows of corners of the cell row (j, k), as bit masks.
+      const size_t r = size_t(k) * n1 + size_t(j);
+      const uint64_t a00 = above_[r], a10 = above_[r + 1], a01 = above_[r + n1], a11 = above_[r + n1 + 1];
+      const uint64_t u = undefined_[r] | undefined_[r + 1] | undefined_[r + n1] | undefined_[r + n1 + 1];
+      const uint64_t all = a00 & a10 & a01 & a11, any = a00 | a10 | a01 | a11;
+      // A cell is skipped when its 8 corners agree (both its corner columns
+      // all above, or both all below) or when one of them is undefined.
+      const uint64_t skip = ((all & (all >> 1)) | ~(any | (any >> 1)) | u | (u >> 1)) & cell_bits;
+      if (skip == cell_bits) continue;
       for (int i = 0; i < brick.cells[0]; ++i) {
-        if (!gather(i, j, k, g)) continue;
-        int above = 0;
-        for (int c = 0; c < 8; ++c) above |= (g[c] > 0) << c;
-        if (above == 0 || above == 255) continue;
+        if ((skip >> i) & 1) continue;
+        const int above = int((a00 >> i) & 3) | int(((a10 >> i) & 3) << 2) | int(((a01 >> i) & 3) << 4) |
+                          int(((a11 >> i) & 3) << 6);
+        gather(i, j, k, g);
         if (method_ == ContourMethod::Cells)
           contour_cell_trilinear(i, j, k, g, above);
         else
           contour_cell_tetra(i, j, k, g);
       }
+    }
   out.points.assign(work_.points.begin(), work_.points.end());
   out.gradients.assign(work_.gradients.begin(), work_.gradients.end());
   out.triangles.assign(work_.triangles.begin(), work_.triangles.end());

@@ -32,7 +32,6 @@ class BrickContourer {
 
  private:
   void prepare(const Brick& brick);
-  bool crosses() const;
   double moved(int i, int j, int k) const;
   const Vec3d& gradient(int i, int j, int k);
   int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
@@ -41,7 +40,7 @@ class BrickContourer {
   void add_fan(const int32_t* ids, int n);
   void contour_cell_trilinear(int i, int j, int k, const double g[8], int above);
   void contour_cell_tetra(int i, int j, int k, const double g[8]);
-  bool gather(int i, int j, int k, double g[8]) const;
+  void gather(int i, int j, int k, double g[8]) const;
 
   Affine xform_;
   double iso_;
@@ -53,6 +52,10 @@ class BrickContourer {
   bool all_defined_ = true;
   Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
   std::vector<double> g_;        // moved f - iso at the corner samples
+  // Per row of corner samples (j, k), bit i: g > 0 (above_), undefined
+  // (undefined_). Rows are at most 64 samples long (run() checks).
+  std::vector<uint64_t> above_, undefined_;
+  bool any_above_ = false, any_below_ = false;
   std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily
   std::vector<uint8_t> has_grad_;
   std::vector<int32_t> slot_vertex_;  // per corner sample and slot: vertex or -1

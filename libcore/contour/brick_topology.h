@@ -41,7 +41,7 @@ struct TopologyCounts {
 // Per-thread scratch for the local topology of one brick at a time.
 class BrickTopology {
  public:
-  // tris: the brick's oriented triangles over its nv local vertices;
+  // tris: the brick's oriented triangles over local vertices;
   // shared: 1 per local vertex that other bricks may use; final_vertex: the
   // final index of each local vertex; first_triangle: the global index of
   // the brick's triangle 0. Writes the neighbours of local edges into
@@ -49,20 +49,20 @@ class BrickTopology {
   // the seam edges to seams, and writes into parts the brick-local part of
   // each triangle over local edges (numbered by first triangle). Returns the
   // number of local parts.
-  int32_t run(const int32_t* tris, size_t nt, size_t nv, const uint8_t* shared, const int32_t* final_vertex,
+  int32_t run(const int32_t* tris, size_t nt, const uint8_t* shared, const int32_t* final_vertex,
               int64_t first_triangle, int32_t* neighbours, int32_t* parts, TopologyCounts& counts,
               std::vector<SeamEdge>& seams);
 
  private:
-  struct HalfEdge {
-    int32_t to;    // the local vertex it runs to
-    int32_t edge;  // 3 * local triangle + i
+  // One undirected local edge: its first two triangle edges and how many.
+  struct Slot {
+    uint64_t key;  // (smaller local vertex << 32) | larger; kEmpty if unused
+    int32_t first, second, count;
   };
-  void half_edges(const int32_t* tris, size_t nt, size_t nv);
+  static constexpr uint64_t kEmpty = ~uint64_t(0);
 
-  std::vector<int32_t> start_, root_;
-  std::vector<uint8_t> done_;  // per local edge: its neighbour is known
-  std::vector<HalfEdge> out_;  // by the vertex each starts from
+  std::vector<Slot> table_;  // open addressing, a power of two long
+  std::vector<int32_t> root_;
 };
 
 }  // namespace isoform

@@ -154,7 +154,7 @@ void assemble(BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt, 
     s.counts.degenerate += degenerate(tri, bm.points);
     for (int m = 0; m < 3; ++m) mesh.triangles[3 * (t0 + t) + size_t(m)] = fin[tri[m]];
   }
-  part_counts[b] = s.topology.run(s.triangles.data(), nt, nv, s.shared.data(), fin, int64_t(t0),
+  part_counts[b] = s.topology.run(s.triangles.data(), nt, s.shared.data(), fin, int64_t(t0),
                                   &mesh.neighbours[3 * t0], &mesh.parts[t0], s.counts, s.seams);
   BrickMesh().points.swap(bm.points);
   BrickMesh().gradients.swap(bm.gradients);
