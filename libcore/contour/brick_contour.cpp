@@ -118,20 +118,17 @@ const Vec3d& BrickContourer::gradient(int i, int j, int k) {
 int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
   const Vec3d w = xform_.apply(index_pos);
   const Vec3d n = xform_.apply_normal(grad);
-  for (int a = 0; a < 3; ++a) {
-    out_->points.push_back(float(w[a]));
-    out_->gradients.push_back(float(n[a]));
-  }
-  return int32_t(out_->points.size() / 3 - 1);
+  std::vector<float>& v = out_->vertices;
+  v.insert(v.end(), {float(w[0]), float(w[1]), float(w[2]), float(n[0]), float(n[1]), float(n[2])});
+  return int32_t(v.size() / 6 - 1);
 }
 
-bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
+bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store) {
   out = BrickMesh();
   prepare(brick);
   if (!any_above_ || !any_below_) return false;
   out_ = &work_;
-  work_.points.clear();
-  work_.gradients.clear();
+  work_.vertices.clear();
   work_.triangles.clear();
   work_.shared.clear();
   work_.stats = ContourStats();
@@ -164,11 +161,18 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
           contour_cell_tetra(i, j, k, g);
       }
     }
-  out.points.assign(work_.points.begin(), work_.points.end());
-  out.gradients.assign(work_.gradients.begin(), work_.gradients.end());
-  out.triangles.assign(work_.triangles.begin(), work_.triangles.end());
-  out.shared.assign(work_.shared.begin(), work_.shared.end());
-  out.stats = work_.stats;
+  const size_t nv = work_.vertices.size() / 6;
+  if (nv >= (size_t(1) << 31) || work_.triangles.size() >= (size_t(1) << 31))
+    throw Unsupported("a brick with more than 2^31 vertices");
+  out.vertices = store.vertices.copy(work_.vertices.data(), work_.vertices.size());
+  out.triangles = store.faces.copy(work_.triangles.data(), work_.triangles.size());
+  out.shared = store.faces.copy(work_.shared.data(), work_.shared.size());
+  out.vertex_count = uint32_t(nv);
+  out.triangle_count = uint32_t(work_.triangles.size() / 3);
+  out.shared_count = uint32_t(work_.shared.size());
+  const ContourStats& c = work_.stats;
+  out.counts = BrickCounts{int32_t(c.ambiguous_faces), int32_t(c.degenerate_saddles), int32_t(c.extra_points),
+                           int32_t(c.centroid_points), int32_t(c.near_sample_points)};
   out_ = nullptr;
   return true;
 }
@@ -323,14 +327,12 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
   double p[3] = {0, 0, 0}, q[3] = {0, 0, 0};
   for (int m = 0; m < n; ++m)
     for (int a = 0; a < 3; ++a) {
-      p[a] += out_->points[3 * size_t(ids[m]) + a] / n;
-      q[a] += out_->gradients[3 * size_t(ids[m]) + a] / n;
+      p[a] += out_->vertices[6 * size_t(ids[m]) + size_t(a)] / n;
+      q[a] += out_->vertices[6 * size_t(ids[m]) + 3 + size_t(a)] / n;
     }
-  for (int a = 0; a < 3; ++a) {
-    out_->points.push_back(float(p[a]));
-    out_->gradients.push_back(float(q[a]));
-  }
-  return int32_t(out_->points.size() / 3 - 1);
+  std::vector<float>& v = out_->vertices;
+  v.insert(v.end(), {float(p[0]), float(p[1]), float(p[2]), float(q[0]), float(q[1]), float(q[2])});
+  return int32_t(v.size() / 6 - 1);
 }
 
 namespace {
@@ -354,7 +356,7 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
   if (n > 3) {
     double p[12][3];
     for (int m = 0; m < n; ++m)
-      for (int a = 0; a < 3; ++a) p[m][a] = double(out_->points[3 * size_t(ids[m]) + a]);
+      for (int a = 0; a < 3; ++a) p[m][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
     double best_area = -1;
     for (int apex = 0; apex < n; ++apex) {
       double smallest = HUGE_VAL;

@@ -9,26 +9,45 @@
 
 #include "../mesh.h"
 #include "../volume.h"
+#include "brick_store.h"
 
 namespace isoform {
 
 enum class ContourMethod { Cells = 0, Tetra = 1 };
 
-struct BrickMesh {
-  std::vector<float> points;        // 3 per vertex, world coordinates
-  std::vector<float> gradients;     // 3 per vertex, world space, not normalised
+// A brick's tables while it is being contoured.
+struct BrickWork {
+  // Per vertex: the point (world coordinates), then the gradient (world
+  // space, not normalised).
+  std::vector<float> vertices;
   std::vector<int32_t> triangles;   // brick-local vertex indices
   std::vector<std::pair<uint64_t, int32_t>> shared;  // (edge key, local vertex)
   ContourStats stats;
+};
+
+// What a brick's cells met (ContourStats, per brick).
+struct BrickCounts {
+  int32_t ambiguous_faces = 0, degenerate_saddles = 0, extra_points = 0, centroid_points = 0,
+          near_sample_points = 0;
+};
+
+// A contoured brick's tables, kept in BrickStores (brick_store.h) until
+// they are merged.
+struct BrickMesh {
+  const float* vertices = nullptr;  // per vertex: point (3), then gradient (3)
+  const int32_t* triangles = nullptr;
+  const std::pair<uint64_t, int32_t>* shared = nullptr;
+  uint32_t vertex_count = 0, triangle_count = 0, shared_count = 0;
+  BrickCounts counts;
 };
 
 // Per-thread scratch for contouring bricks of one grid at one level.
 class BrickContourer {
  public:
   BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method);
-  // Fills out (exactly sized) from the brick; leaves it empty and returns
-  // false when no cell of the brick crosses.
-  bool run(const Brick& brick, BrickMesh& out);
+  // Contours the brick into out, its tables copied into store; leaves out
+  // empty and returns false when no cell of the brick crosses.
+  bool run(const Brick& brick, BrickMesh& out, BrickStores& store);
 
  private:
   void prepare(const Brick& brick);
@@ -47,8 +66,8 @@ class BrickContourer {
   ContourMethod method_;
   int slots_;
   const Brick* brick_ = nullptr;
-  BrickMesh* out_ = nullptr;     // work_ while a brick is contoured
-  BrickMesh work_;               // grows to the largest brick, then is reused
+  BrickWork* out_ = nullptr;     // work_ while a brick is contoured
+  BrickWork work_;               // grows to the largest brick, then is reused
   bool all_defined_ = true;
   Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
   std::vector<double> g_;        // moved f - iso at the corner samples

@@ -49,9 +49,9 @@ Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
   o.triangle.resize(n + 1, 0);
   o.shared.resize(n + 1, 0);
   for (size_t b = 0; b < n; ++b) {
-    o.vertex[b + 1] = o.vertex[b] + bricks[b].points.size() / 3;
-    o.triangle[b + 1] = o.triangle[b] + bricks[b].triangles.size() / 3;
-    o.shared[b + 1] = o.shared[b] + bricks[b].shared.size();
+    o.vertex[b + 1] = o.vertex[b] + bricks[b].vertex_count;
+    o.triangle[b + 1] = o.triangle[b] + bricks[b].triangle_count;
+    o.shared[b + 1] = o.shared[b] + bricks[b].shared_count;
   }
   if (o.vertex.back() >= size_t(INT32_MAX) || 3 * o.triangle.back() >= size_t(INT32_MAX))
     throw Unsupported("the contour has more than 2^31 vertices or triangle corners");
@@ -77,7 +77,9 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
   const std::unique_ptr<Key[]> keys = uninitialised<Key>(nk);
   for_each_brick(nb, [&](size_t b) {
     size_t at = o.shared[b];
-    for (const auto& s : bricks[b].shared) keys[at++] = {s.first, uint64_t(o.vertex[b]) + uint64_t(s.second)};
+    const BrickMesh& bm = bricks[b];
+    for (size_t m = 0; m < bm.shared_count; ++m)
+      keys[at++] = {bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second)};
     for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) fin[v] = 0;
   });
   tbb::parallel_sort(keys.get(), keys.get() + nk);
@@ -105,11 +107,11 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
   return vt;
 }
 
-bool degenerate(const int32_t* tri, const std::vector<float>& points) {
+bool degenerate(const int32_t* tri, const float* vertices) {
   if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return true;
-  const float* p = &points[3 * size_t(tri[0])];
-  const float* q = &points[3 * size_t(tri[1])];
-  const float* r = &points[3 * size_t(tri[2])];
+  const float* p = &vertices[6 * size_t(tri[0])];
+  const float* q = &vertices[6 * size_t(tri[1])];
+  const float* r = &vertices[6 * size_t(tri[2])];
   const double u[3] = {double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2]};
   const double w[3] = {double(r[0]) - p[0], double(r[1]) - p[1], double(r[2]) - p[2]};
   const double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
@@ -125,69 +127,85 @@ struct Scratch {
   bool missing_normal = false;
 };
 
-// Brick b's kept vertices, its triangles, and its local topology, written
-// into mesh at the brick's offsets.
-void assemble(BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt, const MergeOrientation& orient,
-              Mesh& mesh, std::vector<int32_t>& part_counts, Scratch& s) {
-  const size_t nv = bm.points.size() / 3, nt = bm.triangles.size() / 3;
+void oriented_triangles(const BrickMesh& bm, bool reverse, std::vector<int32_t>& out) {
+  out.assign(bm.triangles, bm.triangles + 3 * size_t(bm.triangle_count));
+  if (reverse)
+    for (size_t t = 0; t < bm.triangle_count; ++t) std::swap(out[3 * t + 1], out[3 * t + 2]);
+}
+
+// Brick b's kept vertices and its triangles, written into mesh at the
+// brick's offsets.
+void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
+                 const MergeOrientation& orient, Mesh& mesh, Scratch& s) {
   const int32_t* fin = vt.final_index.get() + o.vertex[b];
   const float sign = orient.negate ? -1.0f : 1.0f;
-  for (size_t v = 0; v < nv; ++v) {
+  for (size_t v = 0; v < bm.vertex_count; ++v) {
     const int32_t f = fin[v];
     if (f < vt.first[b] || f >= vt.first[b + 1]) continue;  // another brick's copy
-    const float* g = &bm.gradients[3 * v];
+    const float* p = &bm.vertices[6 * v];
+    const float* g = p + 3;
     const double len = std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]);
     s.missing_normal |= !(len > 0);
     for (int a = 0; a < 3; ++a) {
-      mesh.points[3 * size_t(f) + a] = bm.points[3 * v + a];
+      mesh.points[3 * size_t(f) + a] = p[a];
       mesh.normals[3 * size_t(f) + a] = len > 0 ? sign * float(g[a] / len) : 0.0f;
     }
   }
-  s.shared.assign(nv, 0);
-  for (const auto& sh : bm.shared) s.shared[size_t(sh.second)] = 1;
-  s.triangles.assign(bm.triangles.begin(), bm.triangles.end());
-  if (orient.reverse)
-    for (size_t t = 0; t < nt; ++t) std::swap(s.triangles[3 * t + 1], s.triangles[3 * t + 2]);
+  oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
-  for (size_t t = 0; t < nt; ++t) {
+  for (size_t t = 0; t < bm.triangle_count; ++t) {
     const int32_t* tri = &s.triangles[3 * t];
-    s.counts.degenerate += degenerate(tri, bm.points);
+    s.counts.degenerate += degenerate(tri, bm.vertices);
     for (int m = 0; m < 3; ++m) mesh.triangles[3 * (t0 + t) + size_t(m)] = fin[tri[m]];
   }
-  part_counts[b] = s.topology.run(s.triangles.data(), nt, s.shared.data(), fin, int64_t(t0),
-                                  &mesh.neighbours[3 * t0], &mesh.parts[t0], s.counts, s.seams);
-  BrickMesh().points.swap(bm.points);
-  BrickMesh().gradients.swap(bm.gradients);
-  BrickMesh().triangles.swap(bm.triangles);
-  BrickMesh().shared.swap(bm.shared);
+}
+
+// Brick b's local neighbours and parts (brick_topology.h).
+void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
+                    const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, Scratch& s) {
+  s.shared.assign(bm.vertex_count, 0);
+  for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
+  oriented_triangles(bm, orient.reverse, s.triangles);
+  const size_t t0 = o.triangle[b];
+  part_counts[b] = s.topology.run(s.triangles.data(), bm.triangle_count, s.shared.data(),
+                                  vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
+                                  &mesh.parts[t0], s.counts, s.seams);
 }
 
 void sum_contour_stats(const std::vector<BrickMesh>& bricks, ContourStats& c) {
   for (const BrickMesh& bm : bricks) {
-    c.ambiguous_faces += bm.stats.ambiguous_faces;
-    c.degenerate_saddles += bm.stats.degenerate_saddles;
-    c.extra_points += bm.stats.extra_points;
-    c.centroid_points += bm.stats.centroid_points;
-    c.near_sample_points += bm.stats.near_sample_points;
+    c.ambiguous_faces += bm.counts.ambiguous_faces;
+    c.degenerate_saddles += bm.counts.degenerate_saddles;
+    c.extra_points += bm.counts.extra_points;
+    c.centroid_points += bm.counts.centroid_points;
+    c.near_sample_points += bm.counts.near_sample_points;
   }
 }
 
 }  // namespace
 
-bool merge_bricks(std::vector<BrickMesh>& bricks, const MergeOrientation& orientation, Mesh& mesh,
+bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh& mesh,
                   const Progress& progress) {
+  std::vector<BrickMesh>& bricks = tables.bricks;
   const size_t nb = bricks.size();
   const Offsets o = prefix_sums(bricks);
   VertexTable vt = vertex_table(bricks, o);
   const size_t nv = size_t(vt.first.back()), nt = o.triangle.back();
-  tbb::parallel_invoke([&] { mesh.points.resize(3 * nv); }, [&] { mesh.normals.resize(3 * nv); },
-                       [&] { mesh.triangles.resize(3 * nt); }, [&] { mesh.neighbours.resize(3 * nt); },
-                       [&] { mesh.parts.resize(nt); });
   sum_contour_stats(bricks, mesh.contour);
-  std::vector<int32_t> part_counts(nb, 0);
   tbb::enumerable_thread_specific<Scratch> scratch;
-  for_each_brick(nb, [&](size_t b) { assemble(bricks[b], b, o, vt, orientation, mesh, part_counts, scratch.local()); });
+  // Vertices and triangles first; the vertex data is then dropped before
+  // the neighbour and part tables are made, which lowers the peak.
+  tbb::parallel_invoke([&] { mesh.points.resize(3 * nv); }, [&] { mesh.normals.resize(3 * nv); },
+                       [&] { mesh.triangles.resize(3 * nt); });
+  for_each_brick(nb, [&](size_t b) { place_brick(bricks[b], b, o, vt, orientation, mesh, scratch.local()); });
+  for (BrickStores& s : tables.stores) s.vertices.clear();
+  tbb::parallel_invoke([&] { mesh.neighbours.resize(3 * nt); }, [&] { mesh.parts.resize(nt); });
+  std::vector<int32_t> part_counts(nb, 0);
+  for_each_brick(nb, [&](size_t b) {
+    brick_topology(bricks[b], b, o, vt, orientation, mesh, part_counts, scratch.local());
+  });
   vt.final_index.reset();
+  for (BrickStores& s : tables.stores) s.faces.clear();
 
   progress.stage(ISOFORM_STAGE_TOPOLOGY);
   // Local parts made global: brick b's come after those of bricks before it.

@@ -5,6 +5,8 @@
 // only edges on brick faces are matched globally (brick_topology.h).
 #pragma once
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <vector>
 
 #include "../mesh.h"
@@ -12,6 +14,12 @@
 #include "brick_contour.h"
 
 namespace isoform {
+
+// The contoured bricks of one grid and the storage of their tables.
+struct BrickTables {
+  std::vector<BrickMesh> bricks;  // the bricks that cross, in brick order
+  tbb::enumerable_thread_specific<BrickStores> stores;
+};
 
 struct MergeOrientation {
   bool reverse = false;  // swap each triangle's last two vertices
@@ -25,7 +33,7 @@ struct MergeOrientation {
 // bricks' stats into mesh.contour. Frees the bricks as it goes. Returns
 // true when some normal is zero. Runs in parallel with TBB in the calling
 // task arena; the result does not depend on the number of threads.
-bool merge_bricks(std::vector<BrickMesh>& bricks, const MergeOrientation& orientation, Mesh& mesh,
+bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh& mesh,
                   const Progress& progress);
 
 }  // namespace isoform
