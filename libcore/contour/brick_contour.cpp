@@ -52,42 +52,47 @@ double BrickContourer::moved(int i, int j, int k) const {
   return std::isfinite(smallest) ? 1e-3 * smallest : 1e-9 * std::max(1.0, std::abs(iso_));
 }
 
-void BrickContourer::prepare(const Brick& brick) {
+bool BrickContourer::prepare(const Brick& brick) {
   brick_ = &brick;
   for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
   if (n_[0] > 64) throw Unsupported("bricks of more than 63 cells along x");
+  all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
   const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
   g_.resize(count);
   above_.resize(size_t(n_[1]) * size_t(n_[2]));
   undefined_.resize(above_.size());
-  all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
   const uint64_t full = n_[0] == 64 ? ~uint64_t(0) : (uint64_t(1) << n_[0]) - 1;
   uint64_t any_above = 0, any_below = 0;
   double* g = g_.data();
   for (int k = 0; k < n_[2]; ++k)
-    for (int j = 0; j < n_[1]; ++j) {
+    for (int j = 0; j < n_[1]; ++j, g += n_[0]) {
       const size_t row = brick.at(0, j, k);
       const float* f = &brick.samples[row];
-      const uint8_t* def = all_defined_ ? nullptr : &brick.defined[row];
       uint64_t above = 0, undefined = 0;
-      for (int i = 0; i < n_[0]; ++i, ++g) {
-        if (def && !def[i]) {
-          *g = std::numeric_limits<double>::quiet_NaN();
-          undefined |= uint64_t(1) << i;
-          continue;
-        }
-        const double v = double(f[i]) - iso_;
-        *g = v != 0.0 ? v : moved(i, j, k);
-        above |= uint64_t(*g > 0) << i;
+      bool zero = false;
+      for (int i = 0; i < n_[0]; ++i) {
+        g[i] = double(f[i]) - iso_;
+        zero |= g[i] == 0.0;
       }
+      if (zero)
+        for (int i = 0; i < n_[0]; ++i)
+          if (g[i] == 0.0) g[i] = moved(i, j, k);
+      if (!all_defined_) {
+        const uint8_t* def = &brick.defined[row];
+        for (int i = 0; i < n_[0]; ++i)
+          if (!def[i]) {
+            g[i] = std::numeric_limits<double>::quiet_NaN();
+            undefined |= uint64_t(1) << i;
+          }
+      }
+      for (int i = 0; i < n_[0]; ++i) above |= uint64_t(g[i] > 0) << i;
       const size_t r = size_t(k) * size_t(n_[1]) + size_t(j);
       above_[r] = above;
       undefined_[r] = undefined;
       any_above |= above;
       any_below |= full & ~above & ~undefined;
     }
-  any_above_ = any_above != 0;
-  any_below_ = any_below != 0;
+  return any_above != 0 && any_below != 0;
 }
 
 void BrickContourer::gather(int i, int j, int k, double g[8]) const {
@@ -125,8 +130,7 @@ int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
 
 bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store) {
   out = BrickMesh();
-  prepare(brick);
-  if (!any_above_ || !any_below_) return false;
+  if (!prepare(brick)) return false;
   out_ = &work_;
   work_.vertices.clear();
   work_.triangles.clear();

@@ -50,7 +50,8 @@ class BrickContourer {
   bool run(const Brick& brick, BrickMesh& out, BrickStores& store);
 
  private:
-  void prepare(const Brick& brick);
+  // Fills g_ and the row masks; false when no cell can cross.
+  bool prepare(const Brick& brick);
   double moved(int i, int j, int k) const;
   const Vec3d& gradient(int i, int j, int k);
   int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
@@ -74,7 +75,6 @@ class BrickContourer {
   // Per row of corner samples (j, k), bit i: g > 0 (above_), undefined
   // (undefined_). Rows are at most 64 samples long (run() checks).
   std::vector<uint64_t> above_, undefined_;
-  bool any_above_ = false, any_below_ = false;
   std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily
   std::vector<uint8_t> has_grad_;
   std::vector<int32_t> slot_vertex_;  // per corner sample and slot: vertex or -1
