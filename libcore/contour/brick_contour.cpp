@@ -57,55 +57,54 @@ bool BrickContourer::prepare(const Brick& brick) {
   for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
   if (n_[0] > 64) throw Unsupported("bricks of more than 63 cells along x");
   all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
-  const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
-  g_.resize(count);
   above_.resize(size_t(n_[1]) * size_t(n_[2]));
   undefined_.resize(above_.size());
   const uint64_t full = n_[0] == 64 ? ~uint64_t(0) : (uint64_t(1) << n_[0]) - 1;
   uint64_t any_above = 0, any_below = 0;
-  double* g = g_.data();
+  bool zero = false;
   for (int k = 0; k < n_[2]; ++k)
-    for (int j = 0; j < n_[1]; ++j, g += n_[0]) {
+    for (int j = 0; j < n_[1]; ++j) {
       const size_t row = brick.at(0, j, k);
       const float* f = &brick.samples[row];
+      // Above: f - iso > 0, or f = iso, which moves up (Remark 3.8).
       uint64_t above = 0, undefined = 0;
-      bool zero = false;
       for (int i = 0; i < n_[0]; ++i) {
-        g[i] = double(f[i]) - iso_;
-        zero |= g[i] == 0.0;
+        above |= uint64_t(double(f[i]) >= iso_) << i;
+        zero |= double(f[i]) == iso_;
       }
-      if (zero)
-        for (int i = 0; i < n_[0]; ++i)
-          if (g[i] == 0.0) g[i] = moved(i, j, k);
       if (!all_defined_) {
         const uint8_t* def = &brick.defined[row];
-        for (int i = 0; i < n_[0]; ++i)
-          if (!def[i]) {
-            g[i] = std::numeric_limits<double>::quiet_NaN();
-            undefined |= uint64_t(1) << i;
-          }
+        for (int i = 0; i < n_[0]; ++i) undefined |= uint64_t(def[i] == 0) << i;
+        above &= ~undefined;
       }
-      for (int i = 0; i < n_[0]; ++i) above |= uint64_t(g[i] > 0) << i;
       const size_t r = size_t(k) * size_t(n_[1]) + size_t(j);
       above_[r] = above;
       undefined_[r] = undefined;
       any_above |= above;
       any_below |= full & ~above & ~undefined;
     }
+  // Without samples to move, g is f - iso, read from the brick as needed.
+  moved_samples_ = zero;
+  if (zero) {
+    g_.resize(size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]));
+    double* g = g_.data();
+    for (int k = 0; k < n_[2]; ++k)
+      for (int j = 0; j < n_[1]; ++j)
+        for (int i = 0; i < n_[0]; ++i, ++g) {
+          const double v = double(brick.value(i, j, k)) - iso_;
+          *g = v != 0.0 ? v : moved(i, j, k);
+        }
+  }
   return any_above != 0 && any_below != 0;
 }
 
+double BrickContourer::g_at(int i, int j, int k) const {
+  if (moved_samples_) return g_[(size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i)];
+  return double(brick_->samples[brick_->at(i, j, k)]) - iso_;
+}
+
 void BrickContourer::gather(int i, int j, int k, double g[8]) const {
-  const size_t n0 = size_t(n_[0]), n01 = n0 * size_t(n_[1]);
-  const double* at = &g_[size_t(k) * n01 + size_t(j) * n0 + size_t(i)];
-  g[0] = at[0];
-  g[1] = at[1];
-  g[2] = at[n0];
-  g[3] = at[n0 + 1];
-  g[4] = at[n01];
-  g[5] = at[n01 + 1];
-  g[6] = at[n01 + n0];
-  g[7] = at[n01 + n0 + 1];
+  for (int c = 0; c < 8; ++c) g[c] = g_at(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
 }
 
 const Vec3d& BrickContourer::gradient(int i, int j, int k) {
@@ -136,7 +135,7 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
   work_.triangles.clear();
   work_.shared.clear();
   work_.stats = ContourStats();
-  const size_t count = g_.size();
+  const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
   grad_.resize(count);
   has_grad_.assign(count, 0);
   slot_vertex_.assign(count * size_t(slots_), -1);
@@ -249,8 +248,8 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
 
   const int sx = ci + (start & 1), sy = cj + ((start >> 1) & 1), sz = ck + (start >> 2);
   const int ex = ci + (end & 1), ey = cj + ((end >> 1) & 1), ez = ck + (end >> 2);
-  const double gs = g_[(size_t(sz) * size_t(n_[1]) + size_t(sy)) * size_t(n_[0]) + size_t(sx)];
-  const double ge = g_[(size_t(ez) * size_t(n_[1]) + size_t(ey)) * size_t(n_[0]) + size_t(ex)];
+  const double gs = g_at(sx, sy, sz);
+  const double ge = g_at(ex, ey, ez);
   // NOTE: a crossing closer than a thousandth of the edge to a sample is
   // held at that distance, so that the several vertices around a sample
   // whose value is within rounding of the isovalue stay distinct in float

@@ -50,7 +50,7 @@ class BrickContourer {
   bool run(const Brick& brick, BrickMesh& out, BrickStores& store);
 
  private:
-  // Fills g_ and the row masks; false when no cell can cross.
+  // Fills the row masks (and g_ if needed); false when no cell can cross.
   bool prepare(const Brick& brick);
   double moved(int i, int j, int k) const;
   const Vec3d& gradient(int i, int j, int k);
@@ -71,7 +71,11 @@ class BrickContourer {
   BrickWork work_;               // grows to the largest brick, then is reused
   bool all_defined_ = true;
   Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
-  std::vector<double> g_;        // moved f - iso at the corner samples
+  // Moved f - iso at the corner samples, kept only when some sample moved
+  // (moved_samples_); else g_at() reads f - iso from the brick.
+  std::vector<double> g_;
+  bool moved_samples_ = false;
+  double g_at(int i, int j, int k) const;
   // Per row of corner samples (j, k), bit i: g > 0 (above_), undefined
   // (undefined_). Rows are at most 64 samples long (run() checks).
   std::vector<uint64_t> above_, undefined_;
