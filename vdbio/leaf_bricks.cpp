@@ -88,14 +88,25 @@ void LeafBricks::fill(size_t index, Brick& out) const {
           block.constant = access.getValue(at);
       }
   // Leaf buffers hold z fastest (offset x*64 + y*8 + z); bricks hold x fastest.
+  // Per row of 11 samples: the last x of the block below, all 8 of the
+  // block, the first two of the block above.
+  constexpr int kX = kBlock * kBlock;
   float* sample = out.samples.data();
   for (int k = 0; k < kSamples; ++k)
-    for (int j = 0; j < kSamples; ++j) {
+    for (int j = 0; j < kSamples; ++j, sample += kSamples) {
       const Block* row = blocks[kBlockOf[k]][kBlockOf[j]];
       const int yz = kLocal[j] * kBlock + kLocal[k];
-      for (int i = 0; i < kSamples; ++i) {
-        const Block& block = row[kBlockOf[i]];
-        *sample++ = block.values ? block.values[kLocal[i] * kBlock * kBlock + yz] : block.constant;
+      sample[0] = row[0].values ? row[0].values[(kBlock - 1) * kX + yz] : row[0].constant;
+      if (const float* v = row[1].values) {
+        for (int x = 0; x < kBlock; ++x) sample[1 + x] = v[x * kX + yz];
+      } else {
+        for (int x = 0; x < kBlock; ++x) sample[1 + x] = row[1].constant;
+      }
+      if (const float* v = row[2].values) {
+        sample[kBlock + 1] = v[yz];
+        sample[kBlock + 2] = v[kX + yz];
+      } else {
+        sample[kBlock + 1] = sample[kBlock + 2] = row[2].constant;
       }
     }
 }

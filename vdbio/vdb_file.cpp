@@ -141,11 +141,20 @@ GridFacts VdbFile::facts(int i) const {
   if (facts.is_scalar) add_scalar_facts(*grid, describe(i), facts);
   std::lock_guard<std::mutex> lock(mutex_);
   facts_[size_t(i)] = facts;
+  read_index_ = i;
+  read_grid_ = grid;
   return facts;
 }
 
 std::shared_ptr<const ScalarGrid> VdbFile::load(int i) const {
-  const openvdb::GridBase::Ptr stored = read_grid(i);
+  openvdb::GridBase::Ptr stored;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (i == read_index_) stored = std::move(read_grid_);
+    read_index_ = -1;
+    read_grid_.reset();
+  }
+  if (!stored) stored = read_grid(i);
   const std::string what = describe(i);
   if (!is_scalar_grid(*stored))
     throw Unsupported(what + " is a " + value_type_name(*stored) +

@@ -25,8 +25,9 @@ namespace isoform::vdbio {
 // Opening checks the file's layout (see vdb_layout.h) and reads every grid's
 // metadata; voxel data are read when a grid is described or loaded, each
 // time through a fresh io::File, so calls may run on several threads at
-// once. Only the (small) facts are kept; loaded grids are the caller's to
-// keep (the C API handle does).
+// once. The (small) facts are kept, and the grid last read for its facts
+// until it is loaded (so that describing a grid, then loading it, reads it
+// once); loaded grids are the caller's to keep (the C API handle does).
 class VdbFile : public VolumeFile {
  public:
   explicit VdbFile(std::string path);
@@ -54,6 +55,8 @@ class VdbFile : public VolumeFile {
   std::vector<std::shared_ptr<const openvdb::GridBase>> grids_;  // metadata and transform only
   mutable std::mutex mutex_;
   mutable std::vector<std::optional<GridFacts>> facts_;
+  mutable int read_index_ = -1;                            // the grid facts() read last
+  mutable std::shared_ptr<openvdb::GridBase> read_grid_;  // until load() takes it
 };
 
 // Throws IoError (missing, unreadable), FormatError (not a VDB, truncated or

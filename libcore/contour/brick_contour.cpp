@@ -52,42 +52,68 @@ double BrickContourer::moved(int i, int j, int k) const {
   return std::isfinite(smallest) ? 1e-3 * smallest : 1e-9 * std::max(1.0, std::abs(iso_));
 }
 
-void BrickContourer::prepare(const Brick& brick) {
+bool BrickContourer::prepare(const Brick& brick) {
   brick_ = &brick;
   for (int a = 0; a < 3; ++a) n_[a] = brick.cells[a] + 1;
-  const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
-  g_.resize(count);
+  if (n_[0] > 64) throw Unsupported("bricks of more than 63 cells along x");
+  all_defined_ = std::find(brick.defined.begin(), brick.defined.end(), uint8_t(0)) == brick.defined.end();
+  above_.resize(size_t(n_[1]) * size_t(n_[2]));
+  undefined_.resize(above_.size());
+  const uint64_t full = n_[0] == 64 ? ~uint64_t(0) : (uint64_t(1) << n_[0]) - 1;
+  uint64_t any_above = 0, any_below = 0;
+  bool zero = false;
   for (int k = 0; k < n_[2]; ++k)
-    for (int j = 0; j < n_[1]; ++j)
+    for (int j = 0; j < n_[1]; ++j) {
+      const size_t row = brick.at(0, j, k);
+      const float* f = &brick.samples[row];
+      // Above: f - iso > 0, or f = iso, which moves up (Remark 3.8).
+      uint64_t above = 0, undefined = 0;
       for (int i = 0; i < n_[0]; ++i) {
-        const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
-        g_[at] = brick.is_defined(i, j, k) ? moved(i, j, k) : std::numeric_limits<double>::quiet_NaN();
+        above |= uint64_t(double(f[i]) >= iso_) << i;
+        zero |= double(f[i]) == iso_;
       }
+      if (!all_defined_) {
+        const uint8_t* def = &brick.defined[row];
+        for (int i = 0; i < n_[0]; ++i) undefined |= uint64_t(def[i] == 0) << i;
+        above &= ~undefined;
+      }
+      const size_t r = size_t(k) * size_t(n_[1]) + size_t(j);
+      above_[r] = above;
+      undefined_[r] = undefined;
+      any_above |= above;
+      any_below |= full & ~above & ~undefined;
+    }
+  // Without samples to move, g is f - iso, read from the brick as needed.
+  moved_samples_ = zero;
+  if (zero) {
+    g_.resize(size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]));
+    double* g = g_.data();
+    for (int k = 0; k < n_[2]; ++k)
+      for (int j = 0; j < n_[1]; ++j)
+        for (int i = 0; i < n_[0]; ++i, ++g) {
+          const double v = double(brick.value(i, j, k)) - iso_;
+          *g = v != 0.0 ? v : moved(i, j, k);
+        }
+  }
+  return any_above != 0 && any_below != 0;
 }
 
-bool BrickContourer::crosses() const {
-  bool pos = false, neg = false;
-  for (double v : g_) {
-    pos |= v > 0;
-    neg |= v < 0;
-  }
-  return pos && neg;
+double BrickContourer::g_at(int i, int j, int k) const {
+  if (moved_samples_) return g_[(size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i)];
+  return double(brick_->samples[brick_->at(i, j, k)]) - iso_;
 }
 
-bool BrickContourer::gather(int i, int j, int k, double g[8]) const {
-  for (int c = 0; c < 8; ++c) {
-    const size_t at = (size_t(k + (c >> 2)) * size_t(n_[1]) + size_t(j + ((c >> 1) & 1))) * size_t(n_[0]) +
-                      size_t(i + (c & 1));
-    g[c] = g_[at];
-    if (std::isnan(g[c])) return false;
-  }
-  return true;
+void BrickContourer::gather(int i, int j, int k, double g[8]) const {
+  for (int c = 0; c < 8; ++c) g[c] = g_at(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
 }
 
 const Vec3d& BrickContourer::gradient(int i, int j, int k) {
   const size_t at = (size_t(k) * size_t(n_[1]) + size_t(j)) * size_t(n_[0]) + size_t(i);
   if (!has_grad_[at]) {
-    grad_[at] = zucker_hummel(*brick_, i, j, k);
+    const Brick& b = *brick_;
+    const Index3 d = b.dims();
+    grad_[at] = all_defined_ ? zucker_hummel_inside(&b.samples[b.at(i, j, k)], size_t(d[0]), size_t(d[0]) * size_t(d[1]))
+                             : zucker_hummel(b, i, j, k);
     has_grad_[at] = 1;
   }
   return grad_[at];
@@ -96,40 +122,75 @@ const Vec3d& BrickContourer::gradient(int i, int j, int k) {
 int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
   const Vec3d w = xform_.apply(index_pos);
   const Vec3d n = xform_.apply_normal(grad);
-  for (int a = 0; a < 3; ++a) {
-    out_->points.push_back(float(w[a]));
-    out_->gradients.push_back(float(n[a]));
-  }
-  return int32_t(out_->points.size() / 3 - 1);
+  std::vector<float>& v = out_->vertices;
+  v.insert(v.end(), {float(w[0]), float(w[1]), float(w[2]), float(n[0]), float(n[1]), float(n[2])});
+  return int32_t(v.size() / 6 - 1);
 }
 
-bool BrickContourer::run(const Brick& brick, BrickMesh& out) {
-  prepare(brick);
-  if (!crosses()) return false;
-  out_ = &out;
-  const size_t count = g_.size();
+bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store) {
+  out = BrickMesh();
+  if (!prepare(brick)) return false;
+  out_ = &work_;
+  work_.vertices.clear();
+  work_.triangles.clear();
+  work_.shared.clear();
+  work_.stats = ContourStats();
+  const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
   grad_.resize(count);
   has_grad_.assign(count, 0);
   slot_vertex_.assign(count * size_t(slots_), -1);
+  const size_t n1 = size_t(n_[1]);
+  const uint64_t cell_bits = (uint64_t(1) << brick.cells[0]) - 1;  // lower corners of a row's cells
   double g[8];
   for (int k = 0; k < brick.cells[2]; ++k)
-    for (int j = 0; j < brick.cells[1]; ++j)
+    for (int j = 0; j < brick.cells[1]; ++j) {
+      // The four rows of corners of the cell row (j, k), as bit masks.
+      const size_t r = size_t(k) * n1 + size_t(j);
+      const uint64_t a00 = above_[r], a10 = above_[r + 1], a01 = above_[r + n1], a11 = above_[r + n1 + 1];
+      const uint64_t u = undefined_[r] | undefined_[r + 1] | undefined_[r + n1] | undefined_[r + n1 + 1];
+      const uint64_t all = a00 & a10 & a01 & a11, any = a00 | a10 | a01 | a11;
+      // A cell is skipped when its 8 corners agree (both its corner columns
+      // all above, or both all below) or when one of them is undefined.
+      const uint64_t skip = ((all & (all >> 1)) | ~(any | (any >> 1)) | u | (u >> 1)) & cell_bits;
+      if (skip == cell_bits) continue;
       for (int i = 0; i < brick.cells[0]; ++i) {
-        if (!gather(i, j, k, g)) continue;
-        int above = 0;
-        for (int c = 0; c < 8; ++c) above |= (g[c] > 0) << c;
-        if (above == 0 || above == 255) continue;
+        if ((skip >> i) & 1) continue;
+        const int above = int((a00 >> i) & 3) | int(((a10 >> i) & 3) << 2) | int(((a01 >> i) & 3) << 4) |
+                          int(((a11 >> i) & 3) << 6);
+        gather(i, j, k, g);
         if (method_ == ContourMethod::Cells)
-          contour_cell_trilinear(i, j, k, g);
+          contour_cell_trilinear(i, j, k, g, above);
         else
           contour_cell_tetra(i, j, k, g);
       }
+    }
+  const size_t nv = work_.vertices.size() / 6;
+  if (nv >= (size_t(1) << 31) || work_.triangles.size() >= (size_t(1) << 31))
+    throw Unsupported("a brick with more than 2^31 vertices");
+  out.vertices = store.vertices.copy(work_.vertices.data(), work_.vertices.size());
+  out.triangles = store.faces.copy(work_.triangles.data(), work_.triangles.size());
+  out.shared = store.faces.copy(work_.shared.data(), work_.shared.size());
+  out.vertex_count = uint32_t(nv);
+  out.triangle_count = uint32_t(work_.triangles.size() / 3);
+  out.shared_count = uint32_t(work_.shared.size());
+  const ContourStats& c = work_.stats;
+  out.counts = BrickCounts{int32_t(c.ambiguous_faces), int32_t(c.degenerate_saddles), int32_t(c.extra_points),
+                           int32_t(c.centroid_points), int32_t(c.near_sample_points)};
+  out_ = nullptr;
   return true;
 }
 
-int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
-  // Canonical direction and key sample, so that every cell (and brick) that
-  // uses this edge computes the same point from the same two values.
+namespace {
+
+// For the edge between corners p and q of a cell (axis edge, face diagonal
+// or cell diagonal): the canonical direction and the corner and slot of its
+// key, so that every cell (and brick) that uses the edge computes the same
+// point from the same two values.
+struct EdgeWay {
+  uint8_t start, end, slot, key_corner;
+};
+
+EdgeWay edge_way(int p, int q) {
   const int diff = p ^ q;
   const int bits = (diff & 1) + ((diff >> 1) & 1) + ((diff >> 2) & 1);
   int start = p, end = q, slot = 0, key_corner = 0;
@@ -148,6 +209,38 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
     slot = 6;
     key_corner = 0;
   }
+  return {uint8_t(start), uint8_t(end), uint8_t(slot), uint8_t(key_corner)};
+}
+
+const EdgeWay& edge_way_table(int p, int q) {
+  struct Table {
+    EdgeWay way[8][8];
+    Table() {
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; ++b) way[a][b] = a == b ? EdgeWay{} : edge_way(a, b);
+    }
+  };
+  static const Table table;
+  return table.way[p][q];
+}
+
+// The corners of each of the 12 cell edges (cell_table.h), lower first.
+const std::array<int, 2>& cell_edge_corners(int e) {
+  struct Table {
+    std::array<int, 2> corners[12];
+    Table() {
+      for (int m = 0; m < 12; ++m) corners[m] = cell::edge_corners(m);
+    }
+  };
+  static const Table table;
+  return table.corners[e];
+}
+
+}  // namespace
+
+int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
+  const EdgeWay& way = edge_way_table(p, q);
+  const int start = way.start, end = way.end, slot = way.slot, key_corner = way.key_corner;
   const int kx = ci + (key_corner & 1), ky = cj + ((key_corner >> 1) & 1), kz = ck + (key_corner >> 2);
   const size_t at =
       ((size_t(kz) * size_t(n_[1]) + size_t(ky)) * size_t(n_[0]) + size_t(kx)) * size_t(slots_) + size_t(slot);
@@ -155,8 +248,8 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
 
   const int sx = ci + (start & 1), sy = cj + ((start >> 1) & 1), sz = ck + (start >> 2);
   const int ex = ci + (end & 1), ey = cj + ((end >> 1) & 1), ez = ck + (end >> 2);
-  const double gs = g_[(size_t(sz) * size_t(n_[1]) + size_t(sy)) * size_t(n_[0]) + size_t(sx)];
-  const double ge = g_[(size_t(ez) * size_t(n_[1]) + size_t(ey)) * size_t(n_[0]) + size_t(ex)];
+  const double gs = g_at(sx, sy, sz);
+  const double ge = g_at(ex, ey, ez);
   // NOTE: a crossing closer than a thousandth of the edge to a sample is
   // held at that distance, so that the several vertices around a sample
   // whose value is within rounding of the isovalue stay distinct in float
@@ -185,16 +278,20 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
   return id;
 }
 
-void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[8]) {
-  CellPolygons cp;
-  cell_polygons(g, cp);
-  out_->stats.ambiguous_faces += cp.ambiguous_lower_faces;
-  out_->stats.degenerate_saddles += cp.degenerate_lower_saddles;
+void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[8], int above) {
+  const CellPolygons* table = unambiguous_cell_polygons(above);
+  CellPolygons decided;
+  if (!table) {
+    cell_polygons(g, decided);
+    out_->stats.ambiguous_faces += decided.ambiguous_lower_faces;
+    out_->stats.degenerate_saddles += decided.degenerate_lower_saddles;
+  }
+  const CellPolygons& cp = table ? *table : decided;
   for (int p = 0; p < cp.count; ++p) {
     const CellPolygon& poly = cp.polygons[p];
     int32_t ids[12];
     for (int m = 0; m < poly.size; ++m) {
-      const std::array<int, 2> ec = cell::edge_corners(poly.edges[m]);
+      const std::array<int, 2>& ec = cell_edge_corners(poly.edges[m]);
       ids[m] = edge_vertex(i, j, k, ec[0], ec[1]);
     }
     std::vector<int32_t>& tri = out_->triangles;
@@ -233,25 +330,25 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
   double p[3] = {0, 0, 0}, q[3] = {0, 0, 0};
   for (int m = 0; m < n; ++m)
     for (int a = 0; a < 3; ++a) {
-      p[a] += out_->points[3 * size_t(ids[m]) + a] / n;
-      q[a] += out_->gradients[3 * size_t(ids[m]) + a] / n;
+      p[a] += out_->vertices[6 * size_t(ids[m]) + size_t(a)] / n;
+      q[a] += out_->vertices[6 * size_t(ids[m]) + 3 + size_t(a)] / n;
     }
-  for (int a = 0; a < 3; ++a) {
-    out_->points.push_back(float(p[a]));
-    out_->gradients.push_back(float(q[a]));
-  }
-  return int32_t(out_->points.size() / 3 - 1);
+  std::vector<float>& v = out_->vertices;
+  v.insert(v.end(), {float(p[0]), float(p[1]), float(p[2]), float(q[0]), float(q[1]), float(q[2])});
+  return int32_t(v.size() / 6 - 1);
 }
 
-double BrickContourer::triangle_area2(int32_t a, int32_t b, int32_t c) const {
-  const float* p = &out_->points[3 * size_t(a)];
-  const float* q = &out_->points[3 * size_t(b)];
-  const float* r = &out_->points[3 * size_t(c)];
-  const double u[3] = {double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2]};
-  const double w[3] = {double(r[0]) - p[0], double(r[1]) - p[1], double(r[2]) - p[2]};
+namespace {
+
+// Twice the squared area of the triangle (p, q, r), from float points.
+double area2(const double* p, const double* q, const double* r) {
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
   const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
   return x * x + y * y + z * z;
 }
+
+}  // namespace
 
 void BrickContourer::add_fan(const int32_t* ids, int n) {
   // NOTE: the apex whose smallest triangle is largest. Points on the edges
@@ -259,14 +356,19 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
   // many at edge midpoints), and a fan from a fixed corner would then make
   // zero-area triangles; among the n fans at least one avoids them.
   int best = 0;
-  double best_area = -1;
-  for (int apex = 0; apex < n && n > 3; ++apex) {
-    double smallest = HUGE_VAL;
-    for (int m = 1; m + 1 < n; ++m)
-      smallest = std::min(smallest, triangle_area2(ids[apex], ids[(apex + m) % n], ids[(apex + m + 1) % n]));
-    if (smallest > best_area) {
-      best_area = smallest;
-      best = apex;
+  if (n > 3) {
+    double p[12][3];
+    for (int m = 0; m < n; ++m)
+      for (int a = 0; a < 3; ++a) p[m][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
+    double best_area = -1;
+    for (int apex = 0; apex < n; ++apex) {
+      double smallest = HUGE_VAL;
+      for (int m = 1; m + 1 < n; ++m)
+        smallest = std::min(smallest, area2(p[apex], p[(apex + m) % n], p[(apex + m + 1) % n]));
+      if (smallest > best_area) {
+        best_area = smallest;
+        best = apex;
+      }
     }
   }
   std::vector<int32_t>& tri = out_->triangles;

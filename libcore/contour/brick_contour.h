@@ -9,48 +9,76 @@
 
 #include "../mesh.h"
 #include "../volume.h"
+#include "brick_store.h"
 
 namespace isoform {
 
 enum class ContourMethod { Cells = 0, Tetra = 1 };
 
-struct BrickMesh {
-  std::vector<float> points;        // 3 per vertex, world coordinates
-  std::vector<float> gradients;     // 3 per vertex, world space, not normalised
+// A brick's tables while it is being contoured.
+struct BrickWork {
+  // Per vertex: the point (world coordinates), then the gradient (world
+  // space, not normalised).
+  std::vector<float> vertices;
   std::vector<int32_t> triangles;   // brick-local vertex indices
   std::vector<std::pair<uint64_t, int32_t>> shared;  // (edge key, local vertex)
   ContourStats stats;
+};
+
+// What a brick's cells met (ContourStats, per brick).
+struct BrickCounts {
+  int32_t ambiguous_faces = 0, degenerate_saddles = 0, extra_points = 0, centroid_points = 0,
+          near_sample_points = 0;
+};
+
+// A contoured brick's tables, kept in BrickStores (brick_store.h) until
+// they are merged.
+struct BrickMesh {
+  const float* vertices = nullptr;  // per vertex: point (3), then gradient (3)
+  const int32_t* triangles = nullptr;
+  const std::pair<uint64_t, int32_t>* shared = nullptr;
+  uint32_t vertex_count = 0, triangle_count = 0, shared_count = 0;
+  BrickCounts counts;
 };
 
 // Per-thread scratch for contouring bricks of one grid at one level.
 class BrickContourer {
  public:
   BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method);
-  // Appends nothing and returns false when no cell of the brick crosses.
-  bool run(const Brick& brick, BrickMesh& out);
+  // Contours the brick into out, its tables copied into store; leaves out
+  // empty and returns false when no cell of the brick crosses.
+  bool run(const Brick& brick, BrickMesh& out, BrickStores& store);
 
  private:
-  void prepare(const Brick& brick);
-  bool crosses() const;
+  // Fills the row masks (and g_ if needed); false when no cell can cross.
+  bool prepare(const Brick& brick);
   double moved(int i, int j, int k) const;
   const Vec3d& gradient(int i, int j, int k);
   int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
   int32_t add_vertex(const Vec3d& index_pos, const Vec3d& grad);
   int32_t add_centroid(const int32_t* ids, int n);
   void add_fan(const int32_t* ids, int n);
-  double triangle_area2(int32_t a, int32_t b, int32_t c) const;
-  void contour_cell_trilinear(int i, int j, int k, const double g[8]);
+  void contour_cell_trilinear(int i, int j, int k, const double g[8], int above);
   void contour_cell_tetra(int i, int j, int k, const double g[8]);
-  bool gather(int i, int j, int k, double g[8]) const;
+  void gather(int i, int j, int k, double g[8]) const;
 
   Affine xform_;
   double iso_;
   ContourMethod method_;
   int slots_;
   const Brick* brick_ = nullptr;
-  BrickMesh* out_ = nullptr;
+  BrickWork* out_ = nullptr;     // work_ while a brick is contoured
+  BrickWork work_;               // grows to the largest brick, then is reused
+  bool all_defined_ = true;
   Index3 n_{0, 0, 0};            // corner samples per axis: cells + 1
-  std::vector<double> g_;        // moved f - iso at the corner samples
+  // Moved f - iso at the corner samples, kept only when some sample moved
+  // (moved_samples_); else g_at() reads f - iso from the brick.
+  std::vector<double> g_;
+  bool moved_samples_ = false;
+  double g_at(int i, int j, int k) const;
+  // Per row of corner samples (j, k), bit i: g > 0 (above_), undefined
+  // (undefined_). Rows are at most 64 samples long (run() checks).
+  std::vector<uint64_t> above_, undefined_;
   std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily
   std::vector<uint8_t> has_grad_;
   std::vector<int32_t> slot_vertex_;  // per corner sample and slot: vertex or -1

@@ -106,6 +106,23 @@ void cell_polygons(const double g[8], CellPolygons& out) {
   chain_segments(segs, n, out);
 }
 
+const CellPolygons* unambiguous_cell_polygons(int above) {
+  struct Table {
+    CellPolygons cases[256];
+    bool ambiguous[256];
+    Table() {
+      for (int c = 0; c < 256; ++c) {
+        double g[8];
+        for (int m = 0; m < 8; ++m) g[m] = (c >> m) & 1 ? 1.0 : -1.0;
+        cell_polygons(g, cases[c]);
+        ambiguous[c] = cases[c].ambiguous_faces > 0;
+      }
+    }
+  };
+  static const Table table;
+  return table.ambiguous[above] ? nullptr : &table.cases[above];
+}
+
 double trilinear(const double g[8], double u, double v, double w) {
   const double x00 = g[0] + u * (g[1] - g[0]), x10 = g[2] + u * (g[3] - g[2]);
   const double x01 = g[4] + u * (g[5] - g[4]), x11 = g[6] + u * (g[7] - g[6]);

@@ -36,6 +36,12 @@ struct CellPolygons {
 // which cell asks, so both cells sharing a face decide alike.
 void cell_polygons(const double g[8], CellPolygons& out);
 
+// The polygons of the cells with corner signs `above` (bit c set when
+// g[c] > 0) when none of their faces is ambiguous: those depend on the signs
+// alone and come from a table made once. nullptr when some face has four
+// crossings; cell_polygons() must then decide it.
+const CellPolygons* unambiguous_cell_polygons(int above);
+
 // True when face f's four crossings are joined through the face's middle
 // (the above corners connected): the saddle value exceeds alpha. A saddle
 // equal to alpha takes the seed's ad-hoc rule: the segments cut off the above

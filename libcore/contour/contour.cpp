@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "../errors.h"
-#include "../topology.h"
 #include "merge.h"
 
 namespace isoform {
@@ -20,11 +19,11 @@ bool wants_increasing(const ScalarGrid& grid, Orientation o) {
   return o == Orientation::Increasing;
 }
 
-std::vector<BrickMesh> contour_bricks(const ScalarGrid& grid, double iso, ContourMethod method,
-                                      const Progress& progress) {
+void contour_bricks(const ScalarGrid& grid, double iso, ContourMethod method, const Progress& progress,
+                    BrickTables& tables) {
   const BrickSource& source = *grid.bricks;
   const size_t n = source.brick_count();
-  std::vector<BrickMesh> out(n);
+  std::vector<BrickMesh> all(n);
   struct Scratch {
     Brick brick;
     BrickContourer contourer;
@@ -36,28 +35,32 @@ std::vector<BrickMesh> contour_bricks(const ScalarGrid& grid, double iso, Contou
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& r) {
     if (stop.load(std::memory_order_relaxed)) return;
     Scratch& s = scratch.local();
+    BrickStores& store = tables.stores.local();
     for (size_t b = r.begin(); b != r.end(); ++b) {
       source.fill(b, s.brick);
-      s.contourer.run(s.brick, out[b]);
+      s.contourer.run(s.brick, all[b], store);
     }
     const size_t d = done.fetch_add(r.size()) + r.size();
     progress.fraction(float(d) / float(n));
     if (progress.cancelled()) stop = true;
   });
   if (stop) throw Cancelled("contour cancelled");
-  return out;
+  size_t crossing = 0;
+  for (const BrickMesh& bm : all) crossing += bm.vertex_count > 0;
+  tables.bricks.reserve(crossing);
+  for (const BrickMesh& bm : all)
+    if (bm.vertex_count > 0) tables.bricks.push_back(bm);
 }
 
-// Reverses triangles and normals as asked. In index space each triangle
-// winds counter-clockwise around the gradient; a mirroring transform
-// (negative determinant) reverses that in world space.
-void orient(Mesh& mesh, bool increasing, double determinant) {
-  const bool reverse = increasing == (determinant < 0);
-  if (reverse)
-    for (size_t t = 0; t < mesh.triangle_count(); ++t)
-      std::swap(mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]);
-  if (!increasing)
-    for (float& c : mesh.normals) c = -c;
+// In index space each triangle winds counter-clockwise around the
+// gradient (the cell method winds each polygon around increasing f, and so
+// does the tetra table); a mirroring transform (negative determinant)
+// reverses that in world space.
+MergeOrientation orientation(bool increasing, double determinant) {
+  MergeOrientation o;
+  o.reverse = increasing == (determinant < 0);
+  o.negate = !increasing;
+  return o;
 }
 
 // Vertices whose Zucker-Hummel estimate vanished (a flat 3x3x3 region) take
@@ -98,17 +101,13 @@ Mesh contour_in_arena(const ScalarGrid& grid, const ContourOptions& options, con
   mesh.contour.isovalue = iso;
   mesh.contour.isovalue_was_auto = options.auto_isovalue;
   progress.stage(ISOFORM_STAGE_CONTOUR);
-  std::vector<BrickMesh> bricks = contour_bricks(grid, iso, options.method, progress);
+  BrickTables tables;
+  contour_bricks(grid, iso, options.method, progress, tables);
   progress.stage(ISOFORM_STAGE_MERGE);
-  merge_bricks(bricks, mesh);
-  bricks.clear();
   const bool increasing = wants_increasing(grid, options.orientation);
-  // The cell method winds each polygon around increasing f, and so does the
-  // tetra table: both are made that way in index space.
-  orient(mesh, increasing, grid.index_to_world.determinant());
-  progress.stage(ISOFORM_STAGE_TOPOLOGY);
-  compute_topology(mesh);
-  repair_normals(mesh);
+  const bool missing =
+      merge_bricks(tables, orientation(increasing, grid.index_to_world.determinant()), mesh, progress);
+  if (missing) repair_normals(mesh);
   progress.stage(ISOFORM_STAGE_DONE);
   return mesh;
 }

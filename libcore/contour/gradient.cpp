@@ -29,6 +29,30 @@ double neighbour(const Brick& b, int i, int j, int k, int r, int s, int t) {
 
 }  // namespace
 
+namespace {
+const double kWeight[4] = {0.0, 1.0, 1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0)};
+const double kNorm = 2.0 * (1.0 + 4.0 / std::sqrt(2.0) + 4.0 / std::sqrt(3.0));
+}  // namespace
+
+Vec3d zucker_hummel_inside(const float* at, size_t row, size_t slice) {
+  // The sums of zucker_hummel() grouped by axis: for x, the weighted
+  // differences f(i+1, j+s, k+t) - f(i-1, j+s, k+t) over the 9 (s, t), and
+  // likewise for y and z; the terms with a zero offset along the axis drop.
+  const std::ptrdiff_t dx = 1, dy = std::ptrdiff_t(row), dz = std::ptrdiff_t(slice);
+  double g[3] = {0.0, 0.0, 0.0};
+  for (int u = -1; u <= 1; ++u)
+    for (int v = -1; v <= 1; ++v) {
+      const double w = kWeight[1 + std::abs(u) + std::abs(v)];
+      const float* px = at + u * dy + v * dz;  // (s, t) = (u, v)
+      const float* py = at + u * dx + v * dz;  // (r, t) = (u, v)
+      const float* pz = at + u * dx + v * dy;  // (r, s) = (u, v)
+      g[0] += w * (double(px[dx]) - double(px[-dx]));
+      g[1] += w * (double(py[dy]) - double(py[-dy]));
+      g[2] += w * (double(pz[dz]) - double(pz[-dz]));
+    }
+  return {g[0] / kNorm, g[1] / kNorm, g[2] / kNorm};
+}
+
 Vec3d zucker_hummel(const Brick& b, int i, int j, int k) {
   // NOTE: c = sqrt(n) / n with n = |r| + |s| + |t|, so 1, 1/sqrt(2),
   // 1/sqrt(3). For f = x the x-sum is 2 (1 + 4/sqrt(2) + 4/sqrt(3)); dividing

@@ -15,4 +15,9 @@ namespace isoform {
 // extrapolated linearly from the sample and its opposite neighbour.
 Vec3d zucker_hummel(const Brick& brick, int i, int j, int k);
 
+// The same where all 26 neighbours are defined: `at` points at the sample,
+// rows are `row` samples apart and slices `slice` apart. The same sums,
+// grouped by axis (equal to zucker_hummel() up to rounding).
+Vec3d zucker_hummel_inside(const float* at, size_t row, size_t slice);
+
 }  // namespace isoform

@@ -1,17 +1,45 @@
-// Merging per-brick vertex and triangle tables into one shared-vertex mesh.
+// Merging per-brick vertex and triangle tables into one shared-vertex mesh
+// with its neighbours and parts.
 #include "merge.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 #include <cmath>
+#include <cstdint>
+#include <memory>
+
+#include "../errors.h"
+#include "brick_topology.h"
+#include "seams.h"
 
 namespace isoform {
 namespace {
 
+// Arrays that are written in full before they are read: no zeroing.
+template <class T>
+std::unique_ptr<T[]> uninitialised(size_t n) {
+  return std::unique_ptr<T[]>(new T[n]);
+}
+
+template <class F>
+void for_each_brick(size_t n, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t b = r.begin(); b != r.end(); ++b) f(b);
+  });
+}
+
+template <class F>
+void for_each_index(size_t n, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) f(i);
+  });
+}
+
 struct Offsets {
-  std::vector<size_t> vertex, triangle;  // per brick, exclusive prefix sums
-  std::vector<size_t> shared;
+  std::vector<size_t> vertex, triangle, shared;  // per brick, exclusive prefix sums
 };
 
 Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
@@ -21,68 +49,194 @@ Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
   o.triangle.resize(n + 1, 0);
   o.shared.resize(n + 1, 0);
   for (size_t b = 0; b < n; ++b) {
-    o.vertex[b + 1] = o.vertex[b] + bricks[b].points.size() / 3;
-    o.triangle[b + 1] = o.triangle[b] + bricks[b].triangles.size() / 3;
-    o.shared[b + 1] = o.shared[b] + bricks[b].shared.size();
+    o.vertex[b + 1] = o.vertex[b] + bricks[b].vertex_count;
+    o.triangle[b + 1] = o.triangle[b] + bricks[b].triangle_count;
+    o.shared[b + 1] = o.shared[b] + bricks[b].shared_count;
   }
+  if (o.vertex.back() >= size_t(INT32_MAX) || 3 * o.triangle.back() >= size_t(INT32_MAX))
+    throw Unsupported("the contour has more than 2^31 vertices or triangle corners");
   return o;
 }
 
-// For every provisional vertex, the provisional vertex that represents it:
-// itself, or the first copy of the same edge crossing in another brick.
-std::vector<int64_t> representatives(const std::vector<BrickMesh>& bricks, const Offsets& o) {
-  std::vector<int64_t> rep(o.vertex.back());
-  tbb::parallel_for(size_t(0), rep.size(), [&](size_t v) { rep[v] = int64_t(v); });
-  std::vector<std::pair<uint64_t, int64_t>> keys(o.shared.back());
-  tbb::parallel_for(size_t(0), bricks.size(), [&](size_t b) {
+// The final index of every provisional vertex (brick b's local vertex v is
+// provisional vertex o.vertex[b] + v). Copies of one edge crossing in
+// several bricks (same key) all take the index of the first copy, which
+// belongs to the lowest brick; the kept vertices are numbered brick by brick.
+struct VertexTable {
+  std::unique_ptr<int32_t[]> final_index;
+  std::vector<int32_t> first;  // per brick: final index of its first kept vertex
+};
+
+VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o) {
+  const size_t nb = bricks.size();
+  VertexTable vt;
+  vt.final_index = uninitialised<int32_t>(o.vertex.back());
+  int32_t* fin = vt.final_index.get();
+  using Key = std::pair<uint64_t, uint64_t>;  // (edge key, provisional vertex)
+  const size_t nk = o.shared.back();
+  const std::unique_ptr<Key[]> keys = uninitialised<Key>(nk);
+  for_each_brick(nb, [&](size_t b) {
     size_t at = o.shared[b];
-    for (const auto& s : bricks[b].shared) keys[at++] = {s.first, int64_t(o.vertex[b]) + s.second};
+    const BrickMesh& bm = bricks[b];
+    for (size_t m = 0; m < bm.shared_count; ++m)
+      keys[at++] = {bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second)};
+    for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) fin[v] = 0;
   });
-  tbb::parallel_sort(keys.begin(), keys.end());
-  for (size_t i = 1; i < keys.size(); ++i)
-    if (keys[i].first == keys[i - 1].first) rep[size_t(keys[i].second)] = rep[size_t(keys[i - 1].second)];
-  return rep;
+  tbb::parallel_sort(keys.get(), keys.get() + nk);
+  const auto copy = [&](size_t i) { return i > 0 && keys[i].first == keys[i - 1].first; };
+  for_each_index(nk, [&](size_t i) {
+    if (copy(i)) fin[keys[i].second] = -1;
+  });
+  std::vector<int32_t> kept(nb, 0);
+  for_each_brick(nb, [&](size_t b) {
+    for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) kept[b] += fin[v] == 0;
+  });
+  vt.first.resize(nb + 1, 0);
+  for (size_t b = 0; b < nb; ++b) vt.first[b + 1] = vt.first[b] + kept[b];
+  for_each_brick(nb, [&](size_t b) {
+    int32_t next = vt.first[b];
+    for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v)
+      if (fin[v] == 0) fin[v] = next++;
+  });
+  for_each_index(nk, [&](size_t i) {
+    if (!copy(i)) return;
+    size_t head = i - 1;
+    while (copy(head)) --head;
+    fin[keys[i].second] = fin[keys[head].second];
+  });
+  return vt;
+}
+
+bool degenerate(const int32_t* tri, const float* vertices) {
+  if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return true;
+  const float* p = &vertices[6 * size_t(tri[0])];
+  const float* q = &vertices[6 * size_t(tri[1])];
+  const float* r = &vertices[6 * size_t(tri[2])];
+  const double u[3] = {double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2]};
+  const double w[3] = {double(r[0]) - p[0], double(r[1]) - p[1], double(r[2]) - p[2]};
+  const double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  return c[0] == 0 && c[1] == 0 && c[2] == 0;
+}
+
+struct Scratch {
+  BrickTopology topology;
+  std::vector<uint8_t> shared;
+  std::vector<int32_t> triangles;  // oriented, brick-local
+  std::vector<SeamEdge> seams;
+  TopologyCounts counts;
+  bool missing_normal = false;
+};
+
+void oriented_triangles(const BrickMesh& bm, bool reverse, std::vector<int32_t>& out) {
+  out.assign(bm.triangles, bm.triangles + 3 * size_t(bm.triangle_count));
+  if (reverse)
+    for (size_t t = 0; t < bm.triangle_count; ++t) std::swap(out[3 * t + 1], out[3 * t + 2]);
+}
+
+// Brick b's kept vertices and its triangles, written into mesh at the
+// brick's offsets.
+void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
+                 const MergeOrientation& orient, Mesh& mesh, Scratch& s) {
+  const int32_t* fin = vt.final_index.get() + o.vertex[b];
+  const float sign = orient.negate ? -1.0f : 1.0f;
+  for (size_t v = 0; v < bm.vertex_count; ++v) {
+    const int32_t f = fin[v];
+    if (f < vt.first[b] || f >= vt.first[b + 1]) continue;  // another brick's copy
+    const float* p = &bm.vertices[6 * v];
+    const float* g = p + 3;
+    const double len = std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]);
+    s.missing_normal |= !(len > 0);
+    for (int a = 0; a < 3; ++a) {
+      mesh.points[3 * size_t(f) + a] = p[a];
+      mesh.normals[3 * size_t(f) + a] = len > 0 ? sign * float(g[a] / len) : 0.0f;
+    }
+  }
+  oriented_triangles(bm, orient.reverse, s.triangles);
+  const size_t t0 = o.triangle[b];
+  for (size_t t = 0; t < bm.triangle_count; ++t) {
+    const int32_t* tri = &s.triangles[3 * t];
+    s.counts.degenerate += degenerate(tri, bm.vertices);
+    for (int m = 0; m < 3; ++m) mesh.triangles[3 * (t0 + t) + size_t(m)] = fin[tri[m]];
+  }
+}
+
+// Brick b's local neighbours and parts (brick_topology.h).
+void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
+                    const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, Scratch& s) {
+  s.shared.assign(bm.vertex_count, 0);
+  for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
+  oriented_triangles(bm, orient.reverse, s.triangles);
+  const size_t t0 = o.triangle[b];
+  part_counts[b] = s.topology.run(s.triangles.data(), bm.triangle_count, s.shared.data(),
+                                  vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
+                                  &mesh.parts[t0], s.counts, s.seams);
+}
+
+void sum_contour_stats(const std::vector<BrickMesh>& bricks, ContourStats& c) {
+  for (const BrickMesh& bm : bricks) {
+    c.ambiguous_faces += bm.counts.ambiguous_faces;
+    c.degenerate_saddles += bm.counts.degenerate_saddles;
+    c.extra_points += bm.counts.extra_points;
+    c.centroid_points += bm.counts.centroid_points;
+    c.near_sample_points += bm.counts.near_sample_points;
+  }
 }
 
 }  // namespace
 
-void merge_bricks(std::vector<BrickMesh>& bricks, Mesh& mesh) {
+bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh& mesh,
+                  const Progress& progress) {
+  std::vector<BrickMesh>& bricks = tables.bricks;
+  const size_t nb = bricks.size();
   const Offsets o = prefix_sums(bricks);
-  const std::vector<int64_t> rep = representatives(bricks, o);
-  // Final index of each kept vertex: a prefix sum over the keep flags.
-  std::vector<int32_t> final_index(rep.size());
-  int32_t next = 0;
-  for (size_t v = 0; v < rep.size(); ++v)
-    if (rep[v] == int64_t(v)) final_index[v] = next++;
-  mesh.points.resize(3 * size_t(next));
-  mesh.normals.resize(3 * size_t(next));
-  mesh.triangles.resize(3 * o.triangle.back());
-  tbb::parallel_for(size_t(0), bricks.size(), [&](size_t b) {
-    BrickMesh& bm = bricks[b];
-    const size_t base = o.vertex[b];
-    for (size_t v = 0; v < bm.points.size() / 3; ++v) {
-      if (rep[base + v] != int64_t(base + v)) continue;
-      const size_t to = 3 * size_t(final_index[base + v]);
-      const float* g = &bm.gradients[3 * v];
-      const double len = std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]);
-      for (int a = 0; a < 3; ++a) {
-        mesh.points[to + a] = bm.points[3 * v + a];
-        mesh.normals[to + a] = len > 0 ? float(g[a] / len) : 0.0f;
-      }
-    }
-    size_t t = 3 * o.triangle[b];
-    for (int32_t local : bm.triangles) mesh.triangles[t++] = final_index[size_t(rep[base + size_t(local)])];
-    BrickMesh().points.swap(bm.points);
-    BrickMesh().gradients.swap(bm.gradients);
-    BrickMesh().triangles.swap(bm.triangles);
+  VertexTable vt = vertex_table(bricks, o);
+  const size_t nv = size_t(vt.first.back()), nt = o.triangle.back();
+  sum_contour_stats(bricks, mesh.contour);
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  // Vertices and triangles first; the vertex data is then dropped before
+  // the neighbour and part tables are made, which lowers the peak.
+  tbb::parallel_invoke([&] { mesh.points.resize(3 * nv); }, [&] { mesh.normals.resize(3 * nv); },
+                       [&] { mesh.triangles.resize(3 * nt); });
+  for_each_brick(nb, [&](size_t b) { place_brick(bricks[b], b, o, vt, orientation, mesh, scratch.local()); });
+  for (BrickStores& s : tables.stores) s.vertices.clear();
+  tbb::parallel_invoke([&] { mesh.neighbours.resize(3 * nt); }, [&] { mesh.parts.resize(nt); });
+  std::vector<int32_t> part_counts(nb, 0);
+  for_each_brick(nb, [&](size_t b) {
+    brick_topology(bricks[b], b, o, vt, orientation, mesh, part_counts, scratch.local());
   });
-  for (const BrickMesh& bm : bricks) {
-    mesh.contour.ambiguous_faces += bm.stats.ambiguous_faces;
-    mesh.contour.degenerate_saddles += bm.stats.degenerate_saddles;
-    mesh.contour.extra_points += bm.stats.extra_points;
-    mesh.contour.centroid_points += bm.stats.centroid_points;
-    mesh.contour.near_sample_points += bm.stats.near_sample_points;
+  vt.final_index.reset();
+  for (BrickStores& s : tables.stores) s.faces.clear();
+
+  progress.stage(ISOFORM_STAGE_TOPOLOGY);
+  // Local parts made global: brick b's come after those of bricks before it.
+  std::vector<int32_t> part_first(nb + 1, 0);
+  for (size_t b = 0; b < nb; ++b) part_first[b + 1] = part_first[b] + part_counts[b];
+  for_each_brick(nb, [&](size_t b) {
+    for (size_t t = o.triangle[b]; t < o.triangle[b + 1]; ++t) mesh.parts[t] += part_first[b];
+  });
+  TopologyCounts counts;
+  bool missing = false;
+  std::vector<SeamEdge> seams;
+  size_t seam_count = 0;
+  for (Scratch& s : scratch) seam_count += s.seams.size();
+  seams.reserve(seam_count);
+  for (Scratch& s : scratch) {
+    counts.add(s.counts);
+    missing |= s.missing_normal;
+    seams.insert(seams.end(), s.seams.begin(), s.seams.end());
+    std::vector<SeamEdge>().swap(s.seams);
   }
+  std::vector<std::pair<int32_t, int32_t>> links;
+  match_seams(seams, mesh.triangles, mesh.neighbours, counts, links);
+  std::vector<SeamEdge>().swap(seams);
+  mesh.part_count = number_parts(mesh.parts, size_t(part_first.back()), links);
+  mesh.stats = MeshStats();
+  mesh.stats.boundary_edges = counts.boundary;
+  mesh.stats.nonmanifold_edges = counts.nonmanifold;
+  mesh.stats.inconsistent_edges = counts.inconsistent;
+  mesh.stats.degenerate_triangles = counts.degenerate;
+  mesh.stats.euler_characteristic = (long long)nv - counts.edges + (long long)nt;
+  return missing;
 }
 
 }  // namespace isoform

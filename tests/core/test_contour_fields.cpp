@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "libcore/topology.h"
 #include "mesh_checks.h"
 
 using namespace isoform;
@@ -180,8 +181,42 @@ TEST(Contour, SerialAndParallelRunsGiveTheSameMesh) {
   const Mesh a = run_contour(*g, 0.0, ContourMethod::Cells, 1);
   const Mesh b = run_contour(*g, 0.0, ContourMethod::Cells, 2);
   EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.normals, b.normals);
   EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.neighbours, b.neighbours);
   EXPECT_EQ(a.parts, b.parts);
+}
+
+TEST(Contour, BrickTopologyEqualsTheWholeMeshAlgorithm) {
+  // Random fields make many parts and many edges on brick faces; the
+  // contour's neighbours, parts and counts (found brick by brick, then
+  // across brick faces) must be those of compute_topology on its output,
+  // for both methods and both orientations.
+  const Index3 n{37, 41, 35};
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<float> v(size_t(n[0]) * n[1] * n[2]);
+    for (float& x : v) x = u(rng);
+    auto g = dense_grid(n, v, seed % 2 ? GridClass::LevelSet : GridClass::Other);
+    for (ContourMethod method : {ContourMethod::Cells, ContourMethod::Tetra}) {
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      const Mesh m = run_contour(*g, 0.2, method, 2);
+      Mesh again;
+      again.points = m.points;
+      again.triangles = m.triangles;
+      compute_topology(again);
+      EXPECT_GT(m.part_count, 10);
+      EXPECT_EQ(m.neighbours, again.neighbours);
+      EXPECT_EQ(m.parts, again.parts);
+      EXPECT_EQ(m.part_count, again.part_count);
+      EXPECT_EQ(m.stats.boundary_edges, again.stats.boundary_edges);
+      EXPECT_EQ(m.stats.nonmanifold_edges, again.stats.nonmanifold_edges);
+      EXPECT_EQ(m.stats.inconsistent_edges, again.stats.inconsistent_edges);
+      EXPECT_EQ(m.stats.degenerate_triangles, again.stats.degenerate_triangles);
+      EXPECT_EQ(m.stats.euler_characteristic, again.stats.euler_characteristic);
+    }
+  }
 }
 
 TEST(Contour, IsovalueOutsideTheRangeGivesAnEmptyMesh) {

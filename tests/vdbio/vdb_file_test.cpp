@@ -141,6 +141,24 @@ TEST(VdbFileRealData, TruncatedAfterOpenFailsAtLoad) {
   EXPECT_EQ(message.rfind(path + ": truncated or damaged OpenVDB file (", 0), 0u) << message;
 }
 
+TEST(VdbFileRealData, DescribingThenLoadingReadsTheGridOnce) {
+  // The grid read for facts() is the one load() contours: cutting the file
+  // in between no longer matters, and the loaded grid has the facts' range.
+  TempDir dir;
+  const std::string path = dir.file("sphere.vdb");
+  std::filesystem::copy_file(data_file("sphere.vdb"), path);
+  const auto file = open_vdb(path);
+  const GridFacts facts = file->facts(0);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) * 6 / 10);
+  const auto grid = file->load(0);
+  ASSERT_TRUE(grid && grid->bricks);
+  EXPECT_GT(grid->bricks->brick_count(), 0u);
+  EXPECT_EQ(grid->value_min, facts.value_min);
+  EXPECT_EQ(grid->value_max, facts.value_max);
+  // Loading again reads the file again, which is now cut short.
+  EXPECT_NE(error_of<FormatError>([&] { file->load(0); }).find("truncated"), std::string::npos);
+}
+
 TEST(VdbFile, CutInsideTheHeader) {
   TempDir dir;
   const std::string path = dir.file("short.vdb");

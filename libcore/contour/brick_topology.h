@@ -1,0 +1,68 @@
+// Section 3.3's neighbour table and parts, computed brick by brick.
+//
+// Every triangle lies in one cell, and an edge of it joins two crossings of
+// that cell (or a crossing and the cell's extra point). A vertex that no
+// other brick shares is used by this brick's triangles only, so every edge
+// with such an end has all its triangles here: its neighbours are found in
+// the brick's own small vertex-to-triangle table. Only edges whose two ends
+// are both shared (they lie on the brick's boundary) can have triangles in
+// other bricks; they become SeamEdge records, matched globally (seams.h).
+// The result is the same table compute_neighbours (topology.h) gives.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace isoform {
+
+// One triangle edge whose two vertices are both on brick boundaries.
+struct SeamEdge {
+  uint64_t key;   // (smaller final vertex << 32) | larger final vertex
+  uint64_t edge;  // 3 * global triangle + i: the edge (v_i, v_i+1)
+};
+
+inline bool operator<(const SeamEdge& a, const SeamEdge& b) {
+  return a.key != b.key ? a.key < b.key : a.edge < b.edge;
+}
+
+// Edge counts for MeshStats, summed over bricks and seams.
+struct TopologyCounts {
+  long long boundary = 0, nonmanifold = 0, inconsistent = 0, degenerate = 0, edges = 0;
+  void add(const TopologyCounts& o) {
+    boundary += o.boundary;
+    nonmanifold += o.nonmanifold;
+    inconsistent += o.inconsistent;
+    degenerate += o.degenerate;
+    edges += o.edges;
+  }
+};
+
+// Per-thread scratch for the local topology of one brick at a time.
+class BrickTopology {
+ public:
+  // tris: the brick's oriented triangles over local vertices;
+  // shared: 1 per local vertex that other bricks may use; final_vertex: the
+  // final index of each local vertex; first_triangle: the global index of
+  // the brick's triangle 0. Writes the neighbours of local edges into
+  // neighbours (3 per triangle; seam edges are left for seams.h), appends
+  // the seam edges to seams, and writes into parts the brick-local part of
+  // each triangle over local edges (numbered by first triangle). Returns the
+  // number of local parts.
+  int32_t run(const int32_t* tris, size_t nt, const uint8_t* shared, const int32_t* final_vertex,
+              int64_t first_triangle, int32_t* neighbours, int32_t* parts, TopologyCounts& counts,
+              std::vector<SeamEdge>& seams);
+
+ private:
+  // One undirected local edge: its first two triangle edges and how many.
+  struct Slot {
+    uint64_t key;  // (smaller local vertex << 32) | larger; kEmpty if unused
+    int32_t first, second, count;
+  };
+  static constexpr uint64_t kEmpty = ~uint64_t(0);
+
+  std::vector<Slot> table_;  // open addressing, a power of two long
+  std::vector<int32_t> root_;
+};
+
+}  // namespace isoform

@@ -1,0 +1,102 @@
+// Seam edges across bricks, and part labels over the whole mesh.
+#include "seams.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+
+namespace isoform {
+namespace {
+
+struct GroupScratch {
+  TopologyCounts counts;
+  std::vector<std::pair<int32_t, int32_t>> links;
+};
+
+// True when triangle edge e runs from its smaller to its larger vertex.
+bool runs_up(const std::vector<int32_t>& triangles, uint64_t e) {
+  const size_t t = size_t(e / 3), i = size_t(e % 3);
+  return triangles[3 * t + i] < triangles[3 * t + (i + 1) % 3];
+}
+
+void match_group(const SeamEdge* g, size_t n, const std::vector<int32_t>& triangles,
+                 std::vector<int32_t>& neighbours, GroupScratch& s) {
+  ++s.counts.edges;
+  for (size_t m = 0; m < n; ++m) neighbours[size_t(g[m].edge)] = -1;
+  if (n == 1) {
+    ++s.counts.boundary;
+  } else if (n == 2) {
+    const int32_t t = int32_t(g[0].edge / 3), u = int32_t(g[1].edge / 3);
+    neighbours[size_t(g[0].edge)] = u;
+    neighbours[size_t(g[1].edge)] = t;
+    if (runs_up(triangles, g[0].edge) == runs_up(triangles, g[1].edge)) ++s.counts.inconsistent;
+    s.links.emplace_back(t, u);
+  } else {
+    ++s.counts.nonmanifold;
+  }
+}
+
+}  // namespace
+
+void match_seams(std::vector<SeamEdge>& seams, const std::vector<int32_t>& triangles,
+                 std::vector<int32_t>& neighbours, TopologyCounts& counts,
+                 std::vector<std::pair<int32_t, int32_t>>& links) {
+  tbb::parallel_sort(seams.begin(), seams.end());
+  const size_t n = seams.size();
+  tbb::enumerable_thread_specific<GroupScratch> scratch;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    GroupScratch& s = scratch.local();
+    // Each range handles the groups that start in it.
+    size_t i = r.begin();
+    while (i > 0 && i < r.end() && seams[i].key == seams[i - 1].key) ++i;
+    while (i < r.end()) {
+      size_t j = i + 1;
+      while (j < n && seams[j].key == seams[i].key) ++j;
+      match_group(&seams[i], j - i, triangles, neighbours, s);
+      i = j;
+    }
+  });
+  for (GroupScratch& s : scratch) {
+    counts.add(s.counts);
+    links.insert(links.end(), s.links.begin(), s.links.end());
+  }
+}
+
+int32_t number_parts(std::vector<int32_t>& parts, size_t local_parts,
+                     const std::vector<std::pair<int32_t, int32_t>>& links) {
+  std::vector<int32_t> root(local_parts);
+  for (size_t g = 0; g < local_parts; ++g) root[g] = int32_t(g);
+  auto find = [&](int32_t x) {
+    while (root[size_t(x)] != x) x = root[size_t(x)] = root[size_t(root[size_t(x)])];
+    return x;
+  };
+  // The smallest local part is the one with the smallest first triangle,
+  // so roots by smallest index are the roots compute_parts finds.
+  for (const auto& l : links) {
+    const int32_t a = find(parts[size_t(l.first)]), b = find(parts[size_t(l.second)]);
+    if (a != b) root[size_t(std::max(a, b))] = std::min(a, b);
+  }
+  std::vector<int64_t> size(local_parts, 0);
+  for (int32_t g : parts) ++size[size_t(g)];
+  std::vector<int32_t> roots;
+  for (size_t g = 0; g < local_parts; ++g) {
+    const int32_t r = find(int32_t(g));
+    if (size_t(r) == g)
+      roots.push_back(r);
+    else
+      size[size_t(r)] += size[g];
+  }
+  std::stable_sort(roots.begin(), roots.end(),
+                   [&](int32_t a, int32_t b) { return size[size_t(a)] > size[size_t(b)]; });
+  std::vector<int32_t> label(local_parts, -1);
+  for (size_t r = 0; r < roots.size(); ++r) label[size_t(roots[r])] = int32_t(r);
+  for (size_t g = 0; g < local_parts; ++g) label[g] = label[size_t(root[g])];
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, parts.size(), 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t t = r.begin(); t != r.end(); ++t) parts[t] = label[size_t(parts[t])];
+  });
+  return int32_t(roots.size());
+}
+
+}  // namespace isoform
