@@ -368,6 +368,13 @@ ISOFORM_API isoform_status isoform_mesh_from_arrays_f64(const double* points, si
                                                         const int32_t* triangles, size_t m,
                                                         isoform_mesh** out);
 
+/* Replaces the mesh's normals by 3 * vertex_count floats (x y z per vertex),
+ * e.g. a surface's exact normals; each is scaled to unit length. They orient
+ * and frame later isoform_curvature calls (earlier results stay until then)
+ * and are saved with the mesh. ISOFORM_ERR_INVALID_ARGUMENT, with the mesh
+ * unchanged, when a normal is zero or not finite. */
+ISOFORM_API isoform_status isoform_mesh_set_normals(isoform_mesh* mesh, const float* normals);
+
 /* ------------------------------------------------------------------ */
 /* Volume visualisation (Hamann 1991, Chapter 2)                      */
 /* ------------------------------------------------------------------ */

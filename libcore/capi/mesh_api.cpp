@@ -137,6 +137,25 @@ isoform_status isoform_mesh_from_arrays_f64(const double* points, size_t n, cons
   return mesh_from_arrays(points, n, triangles, m, out, "isoform_mesh_from_arrays_f64");
 }
 
+isoform_status isoform_mesh_set_normals(isoform_mesh* mesh, const float* normals) {
+  return guarded([&] {
+    if (!mesh || (!normals && mesh->mesh.vertex_count() > 0))
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_set_normals: NULL argument");
+    const size_t n = mesh->mesh.vertex_count();
+    std::vector<float> unit(normals, normals + 3 * n);
+    for (size_t v = 0; v < n; ++v) {
+      float* q = &unit[3 * v];
+      const double len = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
+      if (!std::isfinite(len) || !(len > 0.0))
+        return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_set_normals: normal " + std::to_string(v) +
+                                                      " is zero or not finite");
+      for (int a = 0; a < 3; ++a) q[a] = float(q[a] / len);
+    }
+    mesh->mesh.normals = std::move(unit);
+    return ISOFORM_OK;
+  });
+}
+
 isoform_status isoform_mesh_load(const char* path, isoform_mesh** out) {
   return guarded([&] {
     if (!path || !out) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_load: NULL argument");

@@ -1,5 +1,6 @@
 /* The surface curvature calls of isoform.h from C: options, the contour of
- * a dense sphere, copy-out, colours, statistics, cancel, and errors. */
+ * a dense sphere, copy-out, colours, statistics, cancel, errors, and normals
+ * set by the caller. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -133,11 +134,55 @@ static void test_plane_f64(void) {
   isoform_mesh_free(m);
 }
 
+/* Normals set by the caller frame and orient the fit: the sphere's normals
+ * turned inward and doubled in length come back unit and inward, and the
+ * curvature then has H = -1/r. A zero normal is refused, the mesh kept. */
+static void test_set_normals(void) {
+  isoform_mesh* m = sphere_contour();
+  isoform_curvature_options o;
+  size_t n, i, negative = 0;
+  float *normals, *back, *h;
+  double h_err = 0;
+  if (!m) return;
+  n = isoform_mesh_vertex_count(m);
+  normals = malloc(3 * n * sizeof *normals);
+  back = malloc(3 * n * sizeof *back);
+  h = malloc(n * sizeof *h);
+  CHECK(isoform_mesh_copy_normals(m, normals) == ISOFORM_OK);
+  for (i = 0; i < 3 * n; ++i) normals[i] *= -2.0f;
+  CHECK(isoform_mesh_set_normals(m, normals) == ISOFORM_OK);
+  CHECK(isoform_mesh_copy_normals(m, back) == ISOFORM_OK);
+  for (i = 0; i < n; ++i) {
+    const float* q = &back[3 * i];
+    CHECK(fabs(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - 1) < 1e-6);
+    CHECK(fabs(q[0] - 0.5f * normals[3 * i]) < 1e-6 && fabs(q[2] - 0.5f * normals[3 * i + 2]) < 1e-6);
+  }
+  isoform_curvature_options_default(&o);
+  CHECK(isoform_curvature(m, &o, NULL) == ISOFORM_OK);
+  CHECK(isoform_mesh_copy_curvature(m, ISOFORM_CURVATURE_MEAN, h) == ISOFORM_OK);
+  for (i = 0; i < n; ++i) {
+    h_err += (h[i] + 0.2) * (h[i] + 0.2);
+    negative += h[i] < 0;
+  }
+  CHECK(negative == n);
+  CHECK(sqrt(h_err / (double)n) < 0.01);
+  normals[3 * 5] = normals[3 * 5 + 1] = normals[3 * 5 + 2] = 0.0f;
+  CHECK(isoform_mesh_set_normals(m, normals) == ISOFORM_ERR_INVALID_ARGUMENT);
+  CHECK(strstr(isoform_last_error(), "normal 5 ") != NULL);
+  CHECK(isoform_mesh_copy_normals(m, normals) == ISOFORM_OK);
+  CHECK(memcmp(normals, back, 3 * n * sizeof *normals) == 0);
+  CHECK(isoform_mesh_set_normals(m, NULL) == ISOFORM_ERR_INVALID_ARGUMENT);
+  CHECK(isoform_mesh_set_normals(NULL, normals) == ISOFORM_ERR_INVALID_ARGUMENT);
+  free(normals), free(back), free(h);
+  isoform_mesh_free(m);
+}
+
 int main(void) {
   test_options_default();
   test_sphere();
   test_cancel_and_errors();
   test_plane_f64();
+  test_set_normals();
   if (check_failures) fprintf(stderr, "%d checks failed\n", check_failures);
   return check_failures ? 1 : 0;
 }
