@@ -183,7 +183,10 @@ class OBJECT_OT_isoform_stack(bpy.types.Operator, _VolumeVisual):
                          description="Cells of the evaluation grid per axis")
     transparency: FloatProperty(name="Transparency", default=0.5, min=0.0, max=1.0,
                                 description="t of Section 2.2; alpha = 1 - t")
+    # SKIP_SAVE: a remembered last value would count as set and hide the
+    # current view's direction from invoke().
     view: FloatVectorProperty(name="View", size=3, default=(-1.0, -1.0, -1.0),
+                              options={'SKIP_SAVE'},
                               description="Viewing direction, from the eye into the scene, in "
                                           "world space (invoked from a 3D view: that view's)")
     colour_map: _map_property("viridis")
