@@ -18,19 +18,72 @@ def fill_mesh(mesh, arrays):
     face attribute `part` (0 = the largest connected part)."""
     points = np.ascontiguousarray(arrays.points, dtype=np.float32)
     triangles = np.ascontiguousarray(arrays.triangles, dtype=np.int32)
-    n, m = len(points), len(triangles)
-    mesh.vertices.add(n)
+    mesh.vertices.add(len(points))
     mesh.vertices.foreach_set("co", points.ravel())
+    _add_triangles(mesh, triangles)
+    mesh.polygons.foreach_set("use_smooth", np.ones(len(triangles), dtype=bool))
+    mesh.update(calc_edges=True)
+    _set_normals(mesh, arrays.normals)
+    _set_part(mesh, arrays.parts)
+
+
+def _add_triangles(mesh, triangles):
+    m = len(triangles)
     mesh.loops.add(3 * m)
     mesh.loops.foreach_set("vertex_index", triangles.ravel())
     mesh.polygons.add(m)
     mesh.polygons.foreach_set("loop_start", np.arange(0, 3 * m, 3, dtype=np.int32))
     if _loop_total_is_writable():
         mesh.polygons.foreach_set("loop_total", np.full(m, 3, dtype=np.int32))
-    mesh.polygons.foreach_set("use_smooth", np.ones(m, dtype=bool))
-    mesh.update(calc_edges=True)
-    _set_normals(mesh, arrays.normals)
-    _set_part(mesh, arrays.parts)
+
+
+def fill_coloured_mesh(mesh, arrays, layer="isoform_color"):
+    """Adds a native_visualize.ColouredArrays to an empty mesh: its loose
+    edges (curves, the domain box) first, then its triangles, and its RGBA
+    colours as the active POINT colour attribute `layer`."""
+    points = np.ascontiguousarray(arrays.points, dtype=np.float32)
+    edges = np.ascontiguousarray(arrays.edges, dtype=np.int32)
+    mesh.vertices.add(len(points))
+    mesh.vertices.foreach_set("co", points.ravel())
+    if len(edges):
+        mesh.edges.add(len(edges))
+        mesh.edges.foreach_set("vertices", edges.ravel())
+    _add_triangles(mesh, np.ascontiguousarray(arrays.triangles, dtype=np.int32))
+    mesh.update(calc_edges=True)  # keeps the loose edges added above
+    if arrays.colors is not None:
+        set_point_colours(mesh, layer, arrays.colors)
+
+
+def srgb_to_linear(values):
+    """The sRGB transfer function inverted (colour attributes hold linear values)."""
+    return np.where(values <= 0.04045, values / 12.92, ((values + 0.055) / 1.055) ** 2.4)
+
+
+def set_point_colours(mesh, name, rgba):
+    """rgba: (n, 4) uint8 sRGB colours with linear alpha, as the library
+    makes them. Replaces an attribute of that name; becomes the active and
+    rendered colour attribute (Solid > Attribute shows it)."""
+    if name in mesh.attributes:
+        mesh.attributes.remove(mesh.attributes[name])
+    linear = np.asarray(rgba, dtype=np.float32) / 255.0
+    linear[:, :3] = srgb_to_linear(linear[:, :3])
+    attribute = mesh.attributes.new(name=name, type='BYTE_COLOR', domain='POINT')
+    attribute.data.foreach_set("color", np.ascontiguousarray(linear, dtype=np.float32).ravel())
+    # Colour attributes and these two properties exist from Blender 3.2.
+    mesh.attributes.active_color = attribute
+    mesh.attributes.render_color_index = mesh.attributes.active_color_index
+    return attribute
+
+
+def set_point_values(mesh, name, values):
+    """A FLOAT (n,) or FLOAT_VECTOR (n, 3) POINT attribute, replacing one of that name."""
+    if name in mesh.attributes:
+        mesh.attributes.remove(mesh.attributes[name])
+    values = np.ascontiguousarray(values, dtype=np.float32)
+    kind, field = ('FLOAT', "value") if values.ndim == 1 else ('FLOAT_VECTOR', "vector")
+    attribute = mesh.attributes.new(name=name, type=kind, domain='POINT')
+    attribute.data.foreach_set(field, values.ravel())
+    return attribute
 
 
 def _set_normals(mesh, normals):
@@ -46,15 +99,10 @@ def _set_part(mesh, parts):
     attribute.data.foreach_set("value", np.ascontiguousarray(parts, dtype=np.int32))
 
 
-def add_mesh_object(context, name, arrays, matrix_world=None):
+def add_mesh_object(context, name, arrays, matrix_world=None, fill=fill_mesh):
     """A new object named name in the active collection, selected and active.
     Nothing is left behind if building the mesh fails."""
-    mesh = bpy.data.meshes.new(name)
-    try:
-        fill_mesh(mesh, arrays)
-    except Exception:
-        bpy.data.meshes.remove(mesh)
-        raise
+    mesh = new_mesh(name, arrays, fill)
     obj = bpy.data.objects.new(name, mesh)
     if matrix_world is not None:
         obj.matrix_world = matrix_world
@@ -64,6 +112,17 @@ def add_mesh_object(context, name, arrays, matrix_world=None):
     obj.select_set(True)
     context.view_layer.objects.active = obj
     return obj
+
+
+def new_mesh(name, arrays, fill=fill_mesh):
+    """A new mesh datablock filled by fill(mesh, arrays), removed again if that fails."""
+    mesh = bpy.data.meshes.new(name)
+    try:
+        fill(mesh, arrays)
+    except Exception:
+        bpy.data.meshes.remove(mesh)
+        raise
+    return mesh
 
 
 def triangle_arrays(mesh):

@@ -27,6 +27,8 @@ from types import SimpleNamespace
 import numpy as np
 
 from . import native_structs as structs
+from .native_signatures import SIGNATURES as _SIGNATURES
+from .native_signatures import _f32, _f64, _i32, _u8
 
 # Must equal ISOFORM_VERSION of the isoform.h this module mirrors
 # (major * 10000 + minor * 100 + patch).
@@ -39,6 +41,10 @@ STATUS_CANCELLED = 6
 CLASS_OTHER, CLASS_LEVEL_SET, CLASS_FOG = 0, 1, 2
 METHODS = {"cells": 0, "tetra": 1}
 ORIENTATIONS = {"auto": 0, "increasing": 1, "decreasing": 2}
+CURVATURE_METHODS = {"seed": 0, "quadric": 1, "cubic": 2, "quartic": 3}
+# The scalar quantities, by their attribute names; d1, d2 are directions.
+CURVATURE_QUANTITIES = {"k1": 0, "k2": 1, "mean": 2, "gauss": 3, "absolute": 4}
+CURVATURE_DIRECTIONS = {"d1": 5, "d2": 6}
 STAGE_NAMES = {0: "idle", 1: "loading", 2: "contouring", 3: "merging", 4: "topology", 5: "done"}
 
 
@@ -65,54 +71,6 @@ class CancelledError(IsoformError):
 
 def version_text(version):
     return f"{version // 10000}.{version // 100 % 100}.{version % 100}"
-
-
-# ---------------------------------------------------------------- signatures
-
-_handle = ctypes.c_void_p
-_handle_out = ctypes.POINTER(ctypes.c_void_p)
-_f32 = ctypes.POINTER(ctypes.c_float)
-_i32 = ctypes.POINTER(ctypes.c_int32)
-_f64 = ctypes.POINTER(ctypes.c_double)
-_int, _size, _str = ctypes.c_int, ctypes.c_size_t, ctypes.c_char_p
-
-# name: (restype, argtypes). isoform_version is declared on its own, first.
-_SIGNATURES = {
-    "isoform_last_error": (_str, []),
-    "isoform_status_name": (_str, [_int]),  # status
-    "isoform_volume_open": (_int, [_str, _handle_out]),  # path, out
-    # values, nx, ny, nz, spacing[3], origin[3], name, grid_class, out
-    "isoform_volume_from_dense": (_int, [_f32, _int, _int, _int, _f64, _f64, _str, _int,
-                                         _handle_out]),
-    "isoform_volume_phantom": (_int, [_int, _handle_out]),  # n, out
-    "isoform_volume_save_vdb": (_int, [_handle, _str]),  # volume, path
-    "isoform_volume_free": (None, [_handle]),  # volume
-    "isoform_volume_grid_count": (_int, [_handle]),  # volume
-    # volume, index, out
-    "isoform_volume_grid_info": (_int, [_handle, _int, ctypes.POINTER(structs.GridInfo)]),
-    "isoform_volume_find_grid": (_int, [_handle, _str]),  # volume, name
-    "isoform_contour_options_default": (None, [ctypes.POINTER(structs.ContourOptions)]),
-    # volume, grid, options, progress, out
-    "isoform_contour": (_int, [_handle, _int, ctypes.POINTER(structs.ContourOptions),
-                               ctypes.POINTER(structs.Progress), _handle_out]),
-    "isoform_mesh_stats_get": (_int, [_handle, ctypes.POINTER(structs.MeshStats)]),  # mesh, out
-    "isoform_mesh_vertex_count": (_size, [_handle]),  # mesh
-    "isoform_mesh_triangle_count": (_size, [_handle]),  # mesh
-    "isoform_mesh_part_count": (_size, [_handle]),  # mesh
-    "isoform_mesh_copy_points": (_int, [_handle, _f32]),  # mesh, out
-    "isoform_mesh_copy_normals": (_int, [_handle, _f32]),  # mesh, out
-    "isoform_mesh_copy_triangles": (_int, [_handle, _i32]),  # mesh, out
-    "isoform_mesh_copy_neighbours": (_int, [_handle, _i32]),  # mesh, out
-    "isoform_mesh_copy_parts": (_int, [_handle, _i32]),  # mesh, out
-    # points, n, triangles, m, out
-    "isoform_mesh_from_arrays": (_int, [_f32, _size, _i32, _size, _handle_out]),
-    "isoform_mesh_load": (_int, [_str, _handle_out]),  # path, out
-    "isoform_mesh_save": (_int, [_handle, _str]),  # mesh, path
-    "isoform_mesh_free": (None, [_handle]),  # mesh
-    # Curvature (planned by the lead, not in isoform.h yet): isoform_curvature
-    # and isoform_mesh_copy_curvature are declared here once they land, with
-    # a Mesh.curvature() wrapper below; nothing depends on them before that.
-}
 
 
 class Library:
@@ -373,6 +331,15 @@ class Mesh(_Handle):
             p.ctypes.data_as(_f32), p.shape[0], t.ctypes.data_as(_i32), t.shape[0], out))
 
     @classmethod
+    def from_arrays_f64(cls, points, triangles):
+        """As from_arrays with double-precision points, which the library keeps
+        for curvature fits (float32 alone limits their accuracy on fine meshes)."""
+        p = _as_c(points, np.float64, 3)
+        t = _as_c(triangles, np.int32, 3)
+        return _make(cls, lambda lib, out: lib.mesh_from_arrays_f64(
+            p.ctypes.data_as(_f64), p.shape[0], t.ctypes.data_as(_i32), t.shape[0], out))
+
+    @classmethod
     def load(cls, path):
         return _make(cls, lambda lib, out: lib.mesh_load(_path_bytes(path), out))
 
@@ -416,6 +383,54 @@ class Mesh(_Handle):
 
     def parts(self):
         return self._copy(self._lib.mesh_copy_parts, self.triangle_count, (), np.int32, _i32)
+
+    def curvature(self, method="quartic", extra_rings=0, color_by="mean", threads=0,
+                  progress=None):
+        """Runs isoform_curvature on this mesh (Section 4.2); returns its stats.
+        Sign: positive where the surface bends away from its normal."""
+        options = structs.CurvatureOptions()
+        self._lib.curvature_options_default(ctypes.byref(options))
+        options.method = _choice(CURVATURE_METHODS, method, "curvature method")
+        options.extra_rings = int(extra_rings)
+        options.color_by = _choice(CURVATURE_QUANTITIES, color_by, "colour quantity")
+        options.threads = int(threads)
+        self._lib.check(self._lib.curvature(self.handle, ctypes.byref(options),
+                                            _progress_pointer(progress)))
+        return self.curvature_stats()
+
+    @property
+    def has_curvature(self):
+        return bool(self._lib.mesh_has_curvature(self.handle))
+
+    def curvature_stats(self):
+        out = structs.CurvatureStats()
+        self._lib.check(self._lib.mesh_curvature_stats(self.handle, ctypes.byref(out)))
+        return _struct_namespace(out)
+
+    def curvature_values(self, quantity):
+        """One quantity per vertex: (n,) float32, or (n, 3) for "d1", "d2"."""
+        if quantity in CURVATURE_DIRECTIONS:
+            code, shape = CURVATURE_DIRECTIONS[quantity], (3,)
+        else:
+            code, shape = _choice(CURVATURE_QUANTITIES, quantity, "curvature quantity"), ()
+        out = np.empty((self.vertex_count,) + shape, dtype=np.float32)
+        self._lib.check(self._lib.mesh_copy_curvature(self.handle, code, out.ctypes.data_as(_f32)))
+        return out
+
+    def curvature_flags(self):
+        return self._copy(self._lib.mesh_copy_curvature_flags, self.vertex_count, (), np.uint8,
+                          _u8)
+
+    def colors(self):
+        """(n, 4) uint8 RGBA per vertex, or None when the mesh has no colours."""
+        if self._lib.mesh_color_count(self.handle) == 0:
+            return None
+        return self._copy(self._lib.mesh_copy_colors, self.vertex_count, (4,), np.uint8, _u8)
+
+    def edges(self):
+        """(e, 2) int32 vertex indices of the loose edges (curves, box outlines)."""
+        count = self._lib.mesh_edge_count(self.handle)
+        return self._copy(self._lib.mesh_copy_edges, count, (2,), np.int32, _i32)
 
     def arrays(self):
         """Everything a Blender mesh is built from, as numpy arrays."""

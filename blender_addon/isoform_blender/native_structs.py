@@ -84,6 +84,83 @@ class MeshStats(ctypes.Structure):
     ]
 
 
+class CurvatureOptions(ctypes.Structure):
+    """isoform_curvature_options."""
+    _fields_ = [
+        ("method", ctypes.c_int),
+        ("extra_rings", ctypes.c_int),
+        ("color_by", ctypes.c_int),
+        ("update_normals", ctypes.c_int),
+        ("threads", ctypes.c_int),
+    ]
+
+
+class CurvatureStats(ctypes.Structure):
+    """isoform_curvature_stats: vertex counts per fallback, colour range."""
+    _fields_ = [
+        ("method", ctypes.c_int),
+        ("color_by", ctypes.c_int),
+        ("vertices", c_long_long),
+        ("boundary", c_long_long),
+        ("widened", c_long_long),
+        ("lower_order", c_long_long),
+        ("nonmanifold", c_long_long),
+        ("isolated", c_long_long),
+        ("failed", c_long_long),
+        ("normal_repaired", c_long_long),
+        ("color_min", ctypes.c_double),
+        ("color_max", ctypes.c_double),
+    ]
+
+
+class ColourOptions(ctypes.Structure):
+    """isoform_colour_options: the linear colour-index map of Section 2.2."""
+    _fields_ = [
+        ("map", ctypes.c_int),
+        ("levels", ctypes.c_int),
+        ("fixed_range", ctypes.c_int),
+        ("range_min", ctypes.c_double),
+        ("range_max", ctypes.c_double),
+    ]
+
+
+class SliceOptions(ctypes.Structure):
+    """isoform_slice_options."""
+    _fields_ = [
+        ("position", ctypes.c_double * 3),
+        ("world", ctypes.c_int),
+        ("resolution", ctypes.c_int),
+        ("colour_bar", ctypes.c_int),
+        ("height", ctypes.c_double),
+        ("colour", ColourOptions),
+    ]
+
+
+class BoxesOptions(ctypes.Structure):
+    """isoform_boxes_options."""
+    _fields_ = [
+        ("q", ctypes.c_int * 3),
+        ("gap", ctypes.c_double * 3),
+        ("face_cells", ctypes.c_int * 2),
+        ("centroid_lines", ctypes.c_int),
+        ("domain", ctypes.c_int),
+        ("uvw_min", ctypes.c_double * 3),
+        ("uvw_max", ctypes.c_double * 3),
+        ("centre", ctypes.c_double * 3),
+        ("colour", ColourOptions),
+    ]
+
+
+class StackOptions(ctypes.Structure):
+    """isoform_stack_options."""
+    _fields_ = [
+        ("n", ctypes.c_int * 3),
+        ("transparency", ctypes.c_double),
+        ("view", ctypes.c_double * 3),
+        ("colour", ColourOptions),
+    ]
+
+
 # Every mirrored struct by its C name; the layout test walks this table.
 STRUCTS = {
     "isoform_progress": Progress,
@@ -91,4 +168,10 @@ STRUCTS = {
     "isoform_raw_options": RawOptions,
     "isoform_contour_options": ContourOptions,
     "isoform_mesh_stats": MeshStats,
+    "isoform_curvature_options": CurvatureOptions,
+    "isoform_curvature_stats": CurvatureStats,
+    "isoform_colour_options": ColourOptions,
+    "isoform_slice_options": SliceOptions,
+    "isoform_boxes_options": BoxesOptions,
+    "isoform_stack_options": StackOptions,
 }

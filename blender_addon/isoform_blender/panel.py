@@ -7,7 +7,13 @@ class VIEW3D_MT_isoform(bpy.types.Menu):
     bl_label = "isoform"
 
     def draw(self, context):
-        self.layout.operator("object.isoform_contour")
+        for name in _OPERATORS:
+            self.layout.operator(name)
+
+
+# Contour, Slices, Boxes, Stack work on a volume object; Curvature on a mesh.
+_OPERATORS = ("object.isoform_contour", "object.isoform_slices", "object.isoform_boxes",
+              "object.isoform_stack", "object.isoform_curvature")
 
 
 class VIEW3D_PT_isoform(bpy.types.Panel):
@@ -23,3 +29,12 @@ class VIEW3D_PT_isoform(bpy.types.Panel):
         layout.separator()
         layout.operator("object.isoform_contour", text="Contour Volume", icon='MESH_DATA')
         layout.operator("import_scene.isoform_vdb", text="Import VDB Contour…", icon='IMPORT')
+        layout.separator()
+        layout.label(text="Volume (Chapter 2)")
+        layout.operator("object.isoform_slices", icon='MESH_PLANE')
+        layout.operator("object.isoform_boxes", icon='MESH_CUBE')
+        layout.operator("object.isoform_stack", icon='MOD_ARRAY')
+        layout.separator()
+        layout.label(text="Mesh curvature (Section 4.2)")
+        settings.draw_curvature_settings(layout.column())
+        layout.operator("object.isoform_curvature", icon='SHADING_RENDERED')

@@ -5,7 +5,7 @@ blender -b --factory-startup --python-exit-code 1 --python in_blender.py -- GROU
 
 Groups: import (operators give the CLI's counts), errors (the library's
 message reaches the user, the scene is left as it was), render (Cycles sees
-the contour). Any failed case makes the script exit non-zero.
+the contour), visual (Curvature, Slices, Boxes, Stack: in_blender_visual.py). Any failed case makes the script exit non-zero.
 """
 import argparse
 import os
@@ -332,10 +332,20 @@ GROUPS = {
 }
 
 
+def visual_cases():
+    """Curvature, Slices, Boxes, Stack: in_blender_visual.py, given this module."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import in_blender_visual
+    from types import SimpleNamespace
+    return in_blender_visual.cases(SimpleNamespace(**globals()))
+
+
 def main():
     global ARGS
     ARGS = parse_args()
     install_addon()
+    if ARGS.group == "visual":
+        GROUPS["visual"] = visual_cases()
     failures = 0
     for case in GROUPS[ARGS.group]:
         try:

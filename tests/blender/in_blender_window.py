@@ -185,8 +185,45 @@ def case_volume_in_memory_cleans_up():
     assert not leftovers, f"temporary files left: {leftovers}"
 
 
+def case_curvature_and_stack_from_the_view():
+    """Curvature runs on a worker thread; Stack invoked from the 3D view sorts
+    for that view's direction (the same order as the library's for it)."""
+    import numpy as np
+    from mathutils import Vector
+    from isoform_blender import native, native_visualize
+    bpy.ops.mesh.primitive_ico_sphere_add(radius=1.0, subdivisions=3)
+    sphere = bpy.context.view_layer.objects.active
+    jobs_before = len(STARTED_JOBS)
+    result = invoke(bpy.ops.object.isoform_curvature)
+    assert result == {'RUNNING_MODAL'}, f"invoke returned {result}"
+    assert len(STARTED_JOBS) == jobs_before + 1, "no worker job started"
+    while "mean" not in sphere.data.attributes:
+        yield
+    volume = bpy.data.objects.new("smoke_view", bpy.data.volumes.new("smoke_view"))
+    volume.data.filepath = os.path.join(ARGS.data, "smoke.vdb")
+    bpy.context.collection.objects.link(volume)
+    bpy.context.view_layer.objects.active = volume
+    region = view3d_override()["area"].spaces.active.region_3d
+    view = region.view_rotation @ Vector((0.0, 0.0, -1.0))
+    result = invoke(bpy.ops.object.isoform_stack, n=(2, 2, 2))
+    assert result == {'RUNNING_MODAL'}, f"invoke returned {result}"
+    while "smoke_view_stack" not in bpy.data.objects:
+        yield
+    mesh = bpy.data.objects["smoke_view_stack"].data
+    points = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
+    mesh.vertices.foreach_get("co", points)
+    with native.Volume.open(volume.data.filepath) as handle:
+        expected = native_visualize.coloured_arrays(native_visualize.stack(
+            handle, "", n=(2, 2, 2), view=tuple(view)))
+        default = native_visualize.coloured_arrays(native_visualize.stack(handle, "", n=(2, 2, 2)))
+    assert not np.allclose(default.points, expected.points), "the view changes nothing here"
+    assert np.allclose(points.reshape(-1, 3), expected.points, atol=1e-5), \
+        f"the stack is not sorted for the view {tuple(view)}"
+
+
 CASES = [case_import_runs_on_a_worker_thread, case_file_browser_path, case_escape_cancels,
-         case_worker_error_reported, case_volume_in_memory_cleans_up]
+         case_worker_error_reported, case_volume_in_memory_cleans_up,
+         case_curvature_and_stack_from_the_view]
 
 
 def run_cases():

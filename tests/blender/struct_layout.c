@@ -86,6 +86,65 @@ int main(void) {
   FIELD(isoform_mesh_stats, bbox_max);
   end();
 
+  begin("isoform_curvature_options", sizeof(isoform_curvature_options));
+  FIELD(isoform_curvature_options, method);
+  FIELD(isoform_curvature_options, extra_rings);
+  FIELD(isoform_curvature_options, color_by);
+  FIELD(isoform_curvature_options, update_normals);
+  FIELD(isoform_curvature_options, threads);
+  end();
+
+  begin("isoform_curvature_stats", sizeof(isoform_curvature_stats));
+  FIELD(isoform_curvature_stats, method);
+  FIELD(isoform_curvature_stats, color_by);
+  FIELD(isoform_curvature_stats, vertices);
+  FIELD(isoform_curvature_stats, boundary);
+  FIELD(isoform_curvature_stats, widened);
+  FIELD(isoform_curvature_stats, lower_order);
+  FIELD(isoform_curvature_stats, nonmanifold);
+  FIELD(isoform_curvature_stats, isolated);
+  FIELD(isoform_curvature_stats, failed);
+  FIELD(isoform_curvature_stats, normal_repaired);
+  FIELD(isoform_curvature_stats, color_min);
+  FIELD(isoform_curvature_stats, color_max);
+  end();
+
+  begin("isoform_colour_options", sizeof(isoform_colour_options));
+  FIELD(isoform_colour_options, map);
+  FIELD(isoform_colour_options, levels);
+  FIELD(isoform_colour_options, fixed_range);
+  FIELD(isoform_colour_options, range_min);
+  FIELD(isoform_colour_options, range_max);
+  end();
+
+  begin("isoform_slice_options", sizeof(isoform_slice_options));
+  FIELD(isoform_slice_options, position);
+  FIELD(isoform_slice_options, world);
+  FIELD(isoform_slice_options, resolution);
+  FIELD(isoform_slice_options, colour_bar);
+  FIELD(isoform_slice_options, height);
+  FIELD(isoform_slice_options, colour);
+  end();
+
+  begin("isoform_boxes_options", sizeof(isoform_boxes_options));
+  FIELD(isoform_boxes_options, q);
+  FIELD(isoform_boxes_options, gap);
+  FIELD(isoform_boxes_options, face_cells);
+  FIELD(isoform_boxes_options, centroid_lines);
+  FIELD(isoform_boxes_options, domain);
+  FIELD(isoform_boxes_options, uvw_min);
+  FIELD(isoform_boxes_options, uvw_max);
+  FIELD(isoform_boxes_options, centre);
+  FIELD(isoform_boxes_options, colour);
+  end();
+
+  begin("isoform_stack_options", sizeof(isoform_stack_options));
+  FIELD(isoform_stack_options, n);
+  FIELD(isoform_stack_options, transparency);
+  FIELD(isoform_stack_options, view);
+  FIELD(isoform_stack_options, colour);
+  end();
+
   printf("\n}}\n");
   return 0;
 }
