@@ -48,11 +48,14 @@ class Job:
 class JobOperator:
     """Mixin for operators whose work is one long library call."""
 
+    # The two steps every operator using this mixin defines (abstract here).
     def prepare(self, context):
-        raise NotImplementedError
+        """Reads the operator's inputs on the main thread; returns work(progress)."""
+        raise NotImplementedError(type(self).__name__ + " must define prepare()")
 
     def finish(self, context, result):
-        raise NotImplementedError
+        """Turns the work's result into Blender data on the main thread."""
+        raise NotImplementedError(type(self).__name__ + " must define finish()")
 
     def cleanup(self):
         """Runs once at the end, whatever happened (temporary files)."""
