@@ -135,3 +135,68 @@ def triangle_arrays(mesh):
     triangles = np.empty(len(mesh.loop_triangles) * 3, dtype=np.int32)
     mesh.loop_triangles.foreach_get("vertices", triangles)
     return points.reshape(-1, 3), triangles.reshape(-1, 3)
+
+
+def world_triangles(obj):
+    """(points (n, 3) float64 in world space, triangles (m, 3) int32, the
+    object's 4x4 matrix as float64) of a mesh object: what the library sees
+    of it, in the units the user sees."""
+    points, triangles = triangle_arrays(obj.data)
+    matrix = np.array(obj.matrix_world, dtype=np.float64)
+    world = points.astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3]
+    return world, triangles, matrix
+
+
+def to_object_space(arrays, matrix):
+    """arrays (native.MeshArrays in world space) with points and normals
+    mapped into the object space of a 4x4 world matrix: points by its
+    inverse, normals by its transpose (the inverse transpose of the inverse)."""
+    linear = matrix[:3, :3]
+    points = (np.asarray(arrays.points, dtype=np.float64) - matrix[:3, 3]) @ np.linalg.inv(linear).T
+    normals = np.asarray(arrays.normals, dtype=np.float64) @ linear
+    length = np.linalg.norm(normals, axis=1, keepdims=True)
+    normals = np.where(length > 0, normals / np.maximum(length, 1e-300), 0.0)
+    arrays.points = points.astype(np.float32)
+    arrays.normals = normals.astype(np.float32)
+    return arrays
+
+
+def vertex_normals(mesh):
+    """(n, 3) float32 unit normals per vertex as Blender shades the mesh: its
+    custom normals when it has them (a contour import sets them per vertex),
+    else its vertex normals; +z for a vertex that has neither."""
+    normals = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
+    mesh.vertices.foreach_get("normal", normals)
+    normals = normals.reshape(-1, 3).astype(np.float64)
+    if mesh.has_custom_normals and len(mesh.loops):
+        corners = np.empty(len(mesh.loops) * 3, dtype=np.float32)
+        # NOTE: up to Blender 4.0 corner normals need calc_normals_split();
+        # 4.1 replaced loops' normal by mesh.corner_normals.
+        if hasattr(mesh, "calc_normals_split"):
+            mesh.calc_normals_split()
+            mesh.loops.foreach_get("normal", corners)
+        else:
+            mesh.corner_normals.foreach_get("vector", corners)
+        vertex = np.empty(len(mesh.loops), dtype=np.int32)
+        mesh.loops.foreach_get("vertex_index", vertex)
+        summed = np.zeros_like(normals)
+        np.add.at(summed, vertex, corners.reshape(-1, 3))
+        has_corners = np.linalg.norm(summed, axis=1) > 0
+        normals[has_corners] = summed[has_corners]
+    length = np.linalg.norm(normals, axis=1, keepdims=True)
+    unit = np.where(length > 0, normals / np.maximum(length, 1e-300), [0.0, 0.0, 1.0])
+    return unit.astype(np.float32)
+
+
+def replace_geometry(obj, arrays):
+    """Gives obj a new mesh datablock built from arrays (object space), with
+    the old one's name and materials; the old one goes when nothing else uses
+    it. Nothing changes if building fails."""
+    old = obj.data
+    mesh = new_mesh(old.name, arrays)
+    for material in old.materials:
+        mesh.materials.append(material)
+    obj.data = mesh
+    if old.users == 0:
+        bpy.data.meshes.remove(old)
+    return mesh

@@ -45,7 +45,8 @@ CURVATURE_METHODS = {"seed": 0, "quadric": 1, "cubic": 2, "quartic": 3}
 # The scalar quantities, by their attribute names; d1, d2 are directions.
 CURVATURE_QUANTITIES = {"k1": 0, "k2": 1, "mean": 2, "gauss": 3, "absolute": 4}
 CURVATURE_DIRECTIONS = {"d1": 5, "d2": 6}
-STAGE_NAMES = {0: "idle", 1: "loading", 2: "contouring", 3: "merging", 4: "topology", 5: "done"}
+STAGE_NAMES = {0: "idle", 1: "loading", 2: "contouring", 3: "merging", 4: "topology", 5: "done",
+               6: "curvature", 8: "reduction", 10: "smooth surface"}
 
 
 class LibraryError(Exception):
@@ -373,6 +374,13 @@ class Mesh(_Handle):
 
     def normals(self):
         return self._copy(self._lib.mesh_copy_normals, self.vertex_count, (3,), np.float32, _f32)
+
+    def set_normals(self, normals):
+        """Replaces the normals by (n, 3) values, each scaled to unit length."""
+        n = _as_c(normals, np.float32, 3)
+        if n.shape[0] != self.vertex_count:
+            raise ValueError(f"{n.shape[0]} normals for {self.vertex_count} vertices")
+        self._lib.check(self._lib.mesh_set_normals(self.handle, n.ctypes.data_as(_f32)))
 
     def triangles(self):
         return self._copy(self._lib.mesh_copy_triangles, self.triangle_count, (3,), np.int32, _i32)

@@ -83,4 +83,19 @@ SIGNATURES = {
     "isoform_image_copy_values": (_int, [_handle, _f32]),  # image, out
     "isoform_image_save_png": (_int, [_handle, _str]),  # image, path
     "isoform_image_free": (None, [_handle]),  # image
+    "isoform_mesh_set_normals": (_int, [_handle, _f32]),  # mesh, normals
+    # Reduction (Chapter 5)
+    "isoform_reduce_options_default": (None, [_ptr(structs.ReduceOptions)]),  # options
+    # mesh, options, progress
+    "isoform_reduce": (_int, [_handle, _ptr(structs.ReduceOptions), _ptr(structs.Progress)]),
+    "isoform_mesh_reduce_stats": (_int, [_handle, _ptr(structs.ReduceStats)]),  # mesh, out
+    # Side-vertex surface (Chapter 6)
+    "isoform_patch_options_default": (None, [_ptr(structs.PatchOptions)]),  # options
+    "isoform_patch_create": (_int, [_handle, _ptr(structs.PatchOptions), _handle_out]),
+    "isoform_patch_free": (None, [_handle]),  # patch
+    "isoform_patch_stats_get": (_int, [_handle, _ptr(structs.PatchStats)]),  # patch, out
+    # patch, count, triangles, uv, points, normals
+    "isoform_patch_evaluate": (_int, [_handle, _size, _i32, _f64, _f64, _f64]),
+    # patch, level, progress, out
+    "isoform_patch_tessellate": (_int, [_handle, _int, _ptr(structs.Progress), _handle_out]),
 }

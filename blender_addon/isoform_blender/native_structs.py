@@ -161,6 +161,65 @@ class StackOptions(ctypes.Structure):
     ]
 
 
+class ReduceOptions(ctypes.Structure):
+    """isoform_reduce_options (Chapter 5)."""
+    _fields_ = [
+        ("keep_fraction", ctypes.c_double),
+        ("tolerance", ctypes.c_double),
+        ("lock_boundary", ctypes.c_int),
+        ("point_method", ctypes.c_int),
+        ("graph", ctypes.c_int),
+        ("graph_rms_tolerance", ctypes.c_double),
+        ("swaps", ctypes.c_int),
+        ("measure_error", ctypes.c_int),
+    ]
+
+
+class ReduceStats(ctypes.Structure):
+    """isoform_reduce_stats: what the last reduction of a mesh did."""
+    _fields_ = [
+        ("triangles_before", c_long_long),
+        ("triangles_after", c_long_long),
+        ("vertices_before", c_long_long),
+        ("vertices_after", c_long_long),
+        ("removals", c_long_long),
+        ("swaps", c_long_long),
+        ("passes", ctypes.c_int),
+        ("curvature_computed", ctypes.c_int),
+        ("stop_reason", ctypes.c_int),
+        ("max_distance", ctypes.c_double),
+        ("graph_rms", ctypes.c_double),
+        ("refused_corona", c_long_long),
+        ("refused_half_plane", c_long_long),
+        ("refused_flip", c_long_long),
+        ("refused_nonmanifold", c_long_long),
+        ("refused_boundary", c_long_long),
+        ("refused_tolerance", c_long_long),
+    ]
+
+
+class PatchOptions(ctypes.Structure):
+    """isoform_patch_options (Chapter 6)."""
+    _fields_ = [
+        ("blend", ctypes.c_int),
+        ("tension", ctypes.c_double),
+        ("edge_tension_count", ctypes.c_size_t),
+        ("edge_tension_vertices", ctypes.POINTER(ctypes.c_int32)),
+        ("edge_tension_values", ctypes.POINTER(ctypes.c_double)),
+    ]
+
+
+class PatchStats(ctypes.Structure):
+    """isoform_patch_stats: what building the side-vertex surface met."""
+    _fields_ = [
+        ("triangles", c_long_long),
+        ("edges", c_long_long),
+        ("nonconvex_edges", c_long_long),
+        ("opposite_normal_edges", c_long_long),
+        ("fallback_plane_edges", c_long_long),
+    ]
+
+
 # Every mirrored struct by its C name; the layout test walks this table.
 STRUCTS = {
     "isoform_progress": Progress,
@@ -174,4 +233,8 @@ STRUCTS = {
     "isoform_slice_options": SliceOptions,
     "isoform_boxes_options": BoxesOptions,
     "isoform_stack_options": StackOptions,
+    "isoform_reduce_options": ReduceOptions,
+    "isoform_reduce_stats": ReduceStats,
+    "isoform_patch_options": PatchOptions,
+    "isoform_patch_stats": PatchStats,
 }

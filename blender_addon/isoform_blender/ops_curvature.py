@@ -56,9 +56,7 @@ class OBJECT_OT_isoform_curvature(bpy.types.Operator, CurvatureSettings, JobOper
         obj = context.active_object
         if len(obj.data.polygons) == 0:
             raise UserError(f"{obj.name}: the mesh has no faces; curvature needs a surface")
-        points, triangles = mesh_build.triangle_arrays(obj.data)
-        matrix = np.array(obj.matrix_world, dtype=np.float64)
-        world = points.astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3]
+        world, triangles, matrix = mesh_build.world_triangles(obj)
         self._object_name = obj.name
         arguments = self.curvature_arguments()
         to_object = np.linalg.inv(matrix[:3, :3])

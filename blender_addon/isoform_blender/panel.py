@@ -11,9 +11,11 @@ class VIEW3D_MT_isoform(bpy.types.Menu):
             self.layout.operator(name)
 
 
-# Contour, Slices, Boxes, Stack work on a volume object; Curvature on a mesh.
+# Contour, Slices, Boxes, Stack work on a volume object; Curvature, Reduce and
+# Smooth Surface on a mesh.
 _OPERATORS = ("object.isoform_contour", "object.isoform_slices", "object.isoform_boxes",
-              "object.isoform_stack", "object.isoform_curvature")
+              "object.isoform_stack", "object.isoform_curvature", "object.isoform_reduce",
+              "object.isoform_smooth")
 
 
 class VIEW3D_PT_isoform(bpy.types.Panel):
@@ -38,3 +40,11 @@ class VIEW3D_PT_isoform(bpy.types.Panel):
         layout.label(text="Mesh curvature (Section 4.2)")
         settings.draw_curvature_settings(layout.column())
         layout.operator("object.isoform_curvature", icon='SHADING_RENDERED')
+        layout.separator()
+        layout.label(text="Reduction (Chapter 5)")
+        settings.draw_reduce_settings(layout.column())
+        layout.operator("object.isoform_reduce", icon='MOD_DECIM')
+        layout.separator()
+        layout.label(text="Smooth surface (Chapter 6)")
+        settings.draw_smooth_settings(layout.column())
+        layout.operator("object.isoform_smooth", icon='MOD_SUBSURF')

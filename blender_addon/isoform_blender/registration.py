@@ -1,21 +1,22 @@
 """Registers the add-on's classes and menu entries (bpy only here and below)."""
 import bpy
 
-from . import ops_curvature, ops_import, ops_visualize, ops_volume, panel, settings
+from . import (ops_curvature, ops_import, ops_reduce, ops_smooth, ops_visualize, ops_volume, panel,
+               settings)
 
 _CLASSES = (
     settings.IsoformSettings,
     ops_import.IMPORT_SCENE_OT_isoform_vdb,
     ops_volume.OBJECT_OT_isoform_contour,
     ops_curvature.OBJECT_OT_isoform_curvature,
+    ops_reduce.OBJECT_OT_isoform_reduce,
+    ops_smooth.OBJECT_OT_isoform_smooth,
     ops_visualize.OBJECT_OT_isoform_slices,
     ops_visualize.OBJECT_OT_isoform_boxes,
     ops_visualize.OBJECT_OT_isoform_stack,
     panel.VIEW3D_MT_isoform,
     panel.VIEW3D_PT_isoform,
 )
-# Later capabilities (Reduce, Smooth Surface, Compare) add one operator class
-# each here and one line in panel.py.
 
 
 def _import_menu(self, context):

@@ -96,5 +96,93 @@ class CurvatureSettings(SharedSettings):
         layout.prop(self, "color_by")
 
 
-class IsoformSettings(bpy.types.PropertyGroup, ContourSettings, CurvatureSettings):
+
+
+_REDUCE_POINTS = (
+    ("quadratic", "Quadratic", "Bivariate quadratic least squares in the triangle's plane "
+     "(Hamann 1991, 5.26-5.29)"),
+    ("quadric", "Quadric", "Implicit quadric through the platelet (5.30-5.33)"),
+)
+
+
+class ReduceSettings(SharedSettings):
+    """Mixin: the properties of one reduction (Chapter 5)."""
+    keep_percent: FloatProperty(name="Keep", default=10.0, min=0.01, max=100.0, precision=2,
+                                subtype='PERCENTAGE', options={'SKIP_SAVE'},
+                                description="Percentage of the triangles to keep")
+    use_tolerance: BoolProperty(name="Tolerance", default=False, options={'SKIP_SAVE'},
+                                description="Also stop removing where the surface would move "
+                                            "farther than the tolerance")
+    tolerance: FloatProperty(name="Distance", default=0.01, min=0.0, precision=5,
+                             subtype='DISTANCE', options={'SKIP_SAVE'},
+                             description="Largest distance of an original vertex from the "
+                                         "reduced surface, in world units")
+    lock_boundary: BoolProperty(name="Lock Boundary", default=False, options={'SKIP_SAVE'},
+                                description="Keep every boundary vertex (open meshes)")
+    reduce_point: EnumProperty(name="Point", items=_REDUCE_POINTS, default="quadratic",
+                               options={'SKIP_SAVE'},
+                               description="How the point replacing a triangle is made")
+
+    _SHARED = ("keep_percent", "use_tolerance", "tolerance", "lock_boundary", "reduce_point")
+
+    def reduce_arguments(self):
+        """Keyword arguments of native_surface.reduce (plain values)."""
+        return {"keep_fraction": self.keep_percent / 100.0,
+                "tolerance": self.tolerance if self.use_tolerance else 0.0,
+                "lock_boundary": self.lock_boundary, "point": self.reduce_point}
+
+    def draw_reduce_settings(self, layout):
+        layout.prop(self, "keep_percent")
+        row = layout.row(align=True)
+        row.prop(self, "use_tolerance")
+        sub = row.row()
+        sub.enabled = self.use_tolerance
+        sub.prop(self, "tolerance", text="")
+        layout.prop(self, "lock_boundary")
+        layout.prop(self, "reduce_point")
+
+
+_BLENDS = (
+    ("squared", "Squared", "Weights (u_j u_k)^2, which satisfy Theorem 6.1 (iii)"),
+    ("printed", "Printed (6.2)", "Weights u_j u_k as Hamann (1991) prints them"),
+)
+_NORMAL_SOURCES = (
+    ("MESH", "Mesh", "The mesh's own vertex normals (a contour import carries the volume's "
+     "gradient normals)"),
+    ("ESTIMATE", "Estimate", "Normals estimated from the triangles by the library"),
+)
+
+
+class SmoothSettings(SharedSettings):
+    """Mixin: the properties of one side-vertex surface (Chapter 6)."""
+    level: IntProperty(name="Level", default=3, min=0, max=6, options={'SKIP_SAVE'},
+                       description="Each triangle becomes 4^level triangles")
+    blend: EnumProperty(name="Blend", items=_BLENDS, default="squared", options={'SKIP_SAVE'})
+    auto_tension: BoolProperty(name="Automatic Tension", default=True, options={'SKIP_SAVE'},
+                               description="Conic weights sin(gamma/2) (Theorem 6.3)")
+    tension: FloatProperty(name="Tension", default=0.5, min=0.001, max=1.0, precision=3,
+                           options={'SKIP_SAVE'},
+                           description="One conic weight for every edge: lower pulls the "
+                                       "surface toward the triangles")
+    normal_source: EnumProperty(name="Normals", items=_NORMAL_SOURCES, default="MESH",
+                                options={'SKIP_SAVE'})
+
+    _SHARED = ("level", "blend", "auto_tension", "tension", "normal_source")
+
+    def patch_arguments(self):
+        """Keyword arguments of native_surface.Patch.create (plain values)."""
+        return {"blend": self.blend, "tension": 0.0 if self.auto_tension else self.tension}
+
+    def draw_smooth_settings(self, layout):
+        layout.prop(self, "level")
+        layout.prop(self, "blend")
+        layout.prop(self, "normal_source")
+        layout.prop(self, "auto_tension")
+        row = layout.row()
+        row.enabled = not self.auto_tension
+        row.prop(self, "tension")
+
+
+class IsoformSettings(bpy.types.PropertyGroup, ContourSettings, CurvatureSettings,
+                      ReduceSettings, SmoothSettings):
     """The sidebar's settings, stored in the scene as scene.isoform."""

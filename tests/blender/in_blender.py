@@ -5,7 +5,9 @@ blender -b --factory-startup --python-exit-code 1 --python in_blender.py -- GROU
 
 Groups: import (operators give the CLI's counts), errors (the library's
 message reaches the user, the scene is left as it was), render (Cycles sees
-the contour), visual (Curvature, Slices, Boxes, Stack: in_blender_visual.py). Any failed case makes the script exit non-zero.
+the contour), visual (Curvature, Slices, Boxes, Stack: in_blender_visual.py),
+surface (Reduce, Smooth Surface: in_blender_surface.py). Any failed case
+makes the script exit non-zero.
 """
 import argparse
 import os
@@ -332,20 +334,25 @@ GROUPS = {
 }
 
 
-def visual_cases():
-    """Curvature, Slices, Boxes, Stack: in_blender_visual.py, given this module."""
+# Groups whose cases live in a module of their own, given this module.
+CASE_MODULES = {"visual": "in_blender_visual", "surface": "in_blender_surface"}
+
+
+def module_cases(group):
+    """The cases of in_blender_visual.py (Curvature, Slices, Boxes, Stack) or
+    in_blender_surface.py (Reduce, Smooth Surface), given this module."""
+    import importlib
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import in_blender_visual
     from types import SimpleNamespace
-    return in_blender_visual.cases(SimpleNamespace(**globals()))
+    return importlib.import_module(CASE_MODULES[group]).cases(SimpleNamespace(**globals()))
 
 
 def main():
     global ARGS
     ARGS = parse_args()
     install_addon()
-    if ARGS.group == "visual":
-        GROUPS["visual"] = visual_cases()
+    if ARGS.group in CASE_MODULES:
+        GROUPS[ARGS.group] = module_cases(ARGS.group)
     failures = 0
     for case in GROUPS[ARGS.group]:
         try:

@@ -145,6 +145,53 @@ int main(void) {
   FIELD(isoform_stack_options, colour);
   end();
 
+  begin("isoform_reduce_options", sizeof(isoform_reduce_options));
+  FIELD(isoform_reduce_options, keep_fraction);
+  FIELD(isoform_reduce_options, tolerance);
+  FIELD(isoform_reduce_options, lock_boundary);
+  FIELD(isoform_reduce_options, point_method);
+  FIELD(isoform_reduce_options, graph);
+  FIELD(isoform_reduce_options, graph_rms_tolerance);
+  FIELD(isoform_reduce_options, swaps);
+  FIELD(isoform_reduce_options, measure_error);
+  end();
+
+  begin("isoform_reduce_stats", sizeof(isoform_reduce_stats));
+  FIELD(isoform_reduce_stats, triangles_before);
+  FIELD(isoform_reduce_stats, triangles_after);
+  FIELD(isoform_reduce_stats, vertices_before);
+  FIELD(isoform_reduce_stats, vertices_after);
+  FIELD(isoform_reduce_stats, removals);
+  FIELD(isoform_reduce_stats, swaps);
+  FIELD(isoform_reduce_stats, passes);
+  FIELD(isoform_reduce_stats, curvature_computed);
+  FIELD(isoform_reduce_stats, stop_reason);
+  FIELD(isoform_reduce_stats, max_distance);
+  FIELD(isoform_reduce_stats, graph_rms);
+  FIELD(isoform_reduce_stats, refused_corona);
+  FIELD(isoform_reduce_stats, refused_half_plane);
+  FIELD(isoform_reduce_stats, refused_flip);
+  FIELD(isoform_reduce_stats, refused_nonmanifold);
+  FIELD(isoform_reduce_stats, refused_boundary);
+  FIELD(isoform_reduce_stats, refused_tolerance);
+  end();
+
+  begin("isoform_patch_options", sizeof(isoform_patch_options));
+  FIELD(isoform_patch_options, blend);
+  FIELD(isoform_patch_options, tension);
+  FIELD(isoform_patch_options, edge_tension_count);
+  FIELD(isoform_patch_options, edge_tension_vertices);
+  FIELD(isoform_patch_options, edge_tension_values);
+  end();
+
+  begin("isoform_patch_stats", sizeof(isoform_patch_stats));
+  FIELD(isoform_patch_stats, triangles);
+  FIELD(isoform_patch_stats, edges);
+  FIELD(isoform_patch_stats, nonconvex_edges);
+  FIELD(isoform_patch_stats, opposite_normal_edges);
+  FIELD(isoform_patch_stats, fallback_plane_edges);
+  end();
+
   printf("\n}}\n");
   return 0;
 }

@@ -330,23 +330,31 @@ GROUPS = {
 }
 
 
-def main():
+def run_groups(groups, options):
+    """Runs the cases of the group named on the command line (options: the
+    required --flags) and returns the exit code; sets ARGS first."""
     global ARGS
     parser = argparse.ArgumentParser()
-    parser.add_argument("group", choices=sorted(GROUPS))
-    for option in ("--cli", "--layout", "--vector-vdb-maker", "--wrong-version", "--data"):
+    parser.add_argument("group", choices=sorted(groups))
+    for option in options:
         parser.add_argument(option, required=True)
     ARGS = parser.parse_args()
+    cases = groups[ARGS.group]
     failures = 0
-    for case in GROUPS[ARGS.group]:
+    for case in cases:
         try:
             case()
             print(f"ok   {case.__name__}")
         except Exception:
             failures += 1
             print(f"FAIL {case.__name__}\n{traceback.format_exc()}")
-    print(f"{len(GROUPS[ARGS.group]) - failures}/{len(GROUPS[ARGS.group])} cases passed")
+    print(f"{len(cases) - failures}/{len(cases)} cases passed")
     return 1 if failures else 0
+
+
+def main():
+    return run_groups(GROUPS, ("--cli", "--layout", "--vector-vdb-maker", "--wrong-version",
+                               "--data"))
 
 
 if __name__ == "__main__":

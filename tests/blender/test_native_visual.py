@@ -7,12 +7,10 @@ Same conventions as test_native.py (whose helpers it uses): the library
 comes from $ISOFORM_LIBRARY; figures are compared with the isoform command
 on the same input, with analytic truth, and with the formulas of isoform.h.
 """
-import argparse
 import json
 import os
 import sys
 import tempfile
-import traceback
 
 import numpy as np
 
@@ -207,21 +205,7 @@ GROUPS = {
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("group", choices=sorted(GROUPS))
-    for option in ("--cli", "--vector-vdb-maker", "--data"):
-        parser.add_argument(option, required=True)
-    base.ARGS = parser.parse_args()
-    failures = 0
-    for case in GROUPS[base.ARGS.group]:
-        try:
-            case()
-            print(f"ok   {case.__name__}")
-        except Exception:
-            failures += 1
-            print(f"FAIL {case.__name__}\n{traceback.format_exc()}")
-    print(f"{len(GROUPS[base.ARGS.group]) - failures}/{len(GROUPS[base.ARGS.group])} cases passed")
-    return 1 if failures else 0
+    return base.run_groups(GROUPS, ("--cli", "--vector-vdb-maker", "--data"))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,88 @@
+"""Reduction (Chapter 5) and the side-vertex surface (Chapter 6) through
+ctypes, without bpy: isoform.h "Reduction" and "Side-vertex surface".
+
+Options are keyword arguments; what is not given keeps the library's default
+(isoform_*_options_default).
+"""
+import ctypes
+
+import numpy as np
+
+from . import native
+from . import native_structs as structs
+from .native_signatures import _f64, _i32
+
+REDUCE_POINTS = {"quadratic": 0, "quadric": 1}
+PATCH_BLENDS = {"printed": 0, "squared": 1}
+
+
+def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point=None):
+    lib = native.library()
+    options = structs.ReduceOptions()
+    lib.reduce_options_default(ctypes.byref(options))
+    if keep_fraction is not None:
+        options.keep_fraction = float(keep_fraction)
+    if tolerance is not None:
+        options.tolerance = float(tolerance)
+    if lock_boundary is not None:
+        options.lock_boundary = 1 if lock_boundary else 0
+    if point is not None:
+        options.point_method = native._choice(REDUCE_POINTS, point, "replacement point")
+    return options
+
+
+def reduce(mesh, progress=None, **settings):
+    """Reduces mesh (a native.Mesh) in place by iterative triangle removal;
+    returns the reduction's stats as a namespace."""
+    lib = native.library()
+    options = reduce_options(**settings)
+    lib.check(lib.reduce(mesh.handle, ctypes.byref(options), native._progress_pointer(progress)))
+    stats = structs.ReduceStats()
+    lib.check(lib.mesh_reduce_stats(mesh.handle, ctypes.byref(stats)))
+    return native._struct_namespace(stats)
+
+
+def patch_options(blend=None, tension=None):
+    lib = native.library()
+    options = structs.PatchOptions()
+    lib.patch_options_default(ctypes.byref(options))
+    if blend is not None:
+        options.blend = native._choice(PATCH_BLENDS, blend, "blend")
+    if tension is not None:
+        options.tension = float(tension)
+    return options
+
+
+class Patch(native._Handle):
+    """An isoform_patch: the side-vertex surface over a mesh with normals."""
+    _free_name = "patch_free"
+
+    @classmethod
+    def create(cls, mesh, **settings):
+        options = patch_options(**settings)
+        return native._make(cls, lambda lib, out: lib.patch_create(
+            mesh.handle, ctypes.byref(options), out))
+
+    def stats(self):
+        out = structs.PatchStats()
+        self._lib.check(self._lib.patch_stats_get(self.handle, ctypes.byref(out)))
+        return native._struct_namespace(out)
+
+    def evaluate(self, triangles, uv):
+        """Points and exact unit normals, (k, 3) float64 each, at triangle
+        triangles[k] and barycentric (u, v) = uv[k]."""
+        t = np.ascontiguousarray(triangles, dtype=np.int32).ravel()
+        p = native._as_c(uv, np.float64, 2)
+        if p.shape[0] != t.shape[0]:
+            raise ValueError(f"{t.shape[0]} triangles but {p.shape[0]} (u, v) pairs")
+        points = np.empty((t.shape[0], 3), dtype=np.float64)
+        normals = np.empty((t.shape[0], 3), dtype=np.float64)
+        self._lib.check(self._lib.patch_evaluate(
+            self.handle, t.shape[0], t.ctypes.data_as(_i32), p.ctypes.data_as(_f64),
+            points.ctypes.data_as(_f64), normals.ctypes.data_as(_f64)))
+        return points, normals
+
+    def tessellate(self, level, progress=None):
+        """A new native.Mesh: every triangle split into 4**level, exact normals."""
+        return native._make(native.Mesh, lambda lib, out: lib.patch_tessellate(
+            self.handle, int(level), native._progress_pointer(progress), out))

@@ -1,0 +1,154 @@
+"""The group "surface" of in_blender.py: Reduce (Chapter 5) and Smooth
+Surface (Chapter 6) on mesh objects. One Blender start runs them all.
+
+cases(runner) returns the cases; runner holds in_blender.py's globals (its
+expect, scene_counts, expect_operator_error, mesh_arrays, ARGS).
+"""
+import bpy
+import numpy as np
+
+R = None  # in_blender.py, set by cases()
+
+
+def new_ico_sphere(radius, subdivisions, scale):
+    """An icosphere in an object scaled by `scale`, with one material; world
+    radius radius * scale."""
+    bpy.ops.mesh.primitive_ico_sphere_add(radius=radius, subdivisions=subdivisions)
+    obj = bpy.context.view_layer.objects.active
+    obj.scale = (scale, scale, scale)
+    obj.data.materials.append(bpy.data.materials.new("isoform test material"))
+    bpy.context.view_layer.update()
+    return obj
+
+
+def world_points(obj):
+    points = np.empty(len(obj.data.vertices) * 3, dtype=np.float32)
+    obj.data.vertices.foreach_get("co", points)
+    matrix = np.array(obj.matrix_world, dtype=np.float64)
+    return points.reshape(-1, 3).astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def triangles_of(obj):
+    mesh = obj.data
+    totals = np.empty(len(mesh.polygons), dtype=np.int32)
+    mesh.polygons.foreach_get("loop_total", totals)
+    R.expect(np.all(totals == 3), "not all faces are triangles")
+    corners = np.empty(len(mesh.loops), dtype=np.int32)
+    mesh.loops.foreach_get("vertex_index", corners)
+    return corners.reshape(-1, 3)
+
+
+def expect_closed_manifold(obj):
+    """Every edge is shared by exactly two triangles, once in each direction."""
+    triangles = triangles_of(obj)
+    directed = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    keys = directed[:, 0].astype(np.int64) * len(obj.data.vertices) + directed[:, 1]
+    R.expect(len(np.unique(keys)) == len(keys), f"{obj.name}: a directed edge is used twice")
+    reverse = directed[:, 1].astype(np.int64) * len(obj.data.vertices) + directed[:, 0]
+    R.expect(np.all(np.isin(reverse, keys)), f"{obj.name}: an edge has one triangle only")
+
+
+# ---------------------------------------------------------------- reduce
+
+def case_reduce_keeps_fraction_closed_on_the_sphere():
+    """An icosphere of 5120 triangles, world radius 3, reduced to 20%: the
+    same object and material, 1024 triangles as the library makes them, still
+    closed with Euler characteristic 2 and its vertices on the sphere."""
+    obj = new_ico_sphere(2.0, 5, 1.5)
+    name, material = obj.name, obj.data.materials[0]
+    before = R.scene_counts()
+    result = bpy.ops.object.isoform_reduce(keep_percent=20.0)
+    R.expect(result == {'FINISHED'}, f"operator returned {result}")
+    R.expect(R.scene_counts() == before, f"scene counts {before} -> {R.scene_counts()}")
+    obj = bpy.data.objects[name]
+    faces, vertices = len(obj.data.polygons), len(obj.data.vertices)
+    R.expect(faces == 1024, f"{faces} triangles, expected 20% of 5120 = 1024")
+    R.expect(vertices - len(obj.data.edges) + faces == 2,
+             f"Euler characteristic {vertices - len(obj.data.edges) + faces}")
+    expect_closed_manifold(obj)
+    R.expect(obj.data.materials[0] == material, "the material slot was lost")
+    radius = np.linalg.norm(world_points(obj), axis=1)
+    R.expect(np.all(np.abs(radius - 3.0) < 0.02), f"radius {radius.min()}..{radius.max()}")
+
+
+def case_reduce_matches_library():
+    """The operator's mesh equals the library's reduction of the same world
+    triangles, mapped back into the object's space."""
+    from isoform_blender import mesh_build, native, native_surface
+    obj = new_ico_sphere(1.0, 3, 2.0)
+    world, triangles, matrix = mesh_build.world_triangles(obj)
+    with native.Mesh.from_arrays_f64(world, triangles) as mesh:
+        native_surface.reduce(mesh, keep_fraction=0.5)
+        expected = mesh_build.to_object_space(mesh.arrays(), matrix)
+    R.expect(bpy.ops.object.isoform_reduce(keep_percent=50.0) == {'FINISHED'}, "operator failed")
+    R.expect(np.array_equal(triangles_of(obj), expected.triangles), "triangles differ")
+    points = np.empty(len(obj.data.vertices) * 3, dtype=np.float32)
+    obj.data.vertices.foreach_get("co", points)
+    R.expect(np.allclose(points.reshape(-1, 3), expected.points, atol=1e-6), "points differ")
+
+
+def case_reduce_errors_leave_the_mesh():
+    """A mesh without faces, and a non-manifold one (three triangles on an
+    edge): Blender error reports, the mesh as it was."""
+    mesh = bpy.data.meshes.new("isoform points only")
+    mesh.vertices.add(3)
+    obj = bpy.data.objects.new("isoform points only", mesh)
+    bpy.context.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    R.expect_operator_error(bpy.ops.object.isoform_reduce, ["no faces"])
+    fin = bpy.data.meshes.new("isoform fin")
+    fin.from_pydata([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1)], [],
+                    [(0, 1, 2), (1, 0, 3), (0, 1, 4)])
+    obj = bpy.data.objects.new("isoform fin", fin)
+    bpy.context.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    R.expect_operator_error(bpy.ops.object.isoform_reduce, ["edge"])
+    R.expect(len(obj.data.polygons) == 3, "the non-manifold mesh was changed")
+
+
+# ---------------------------------------------------------------- smooth surface
+
+def case_smooth_surface_beside_the_mesh():
+    """An icosphere of 80 triangles (world radius 3), level 2: a new closed
+    object of 80 * 16 triangles beside it, far closer to the sphere than the
+    flat triangles, the source kept."""
+    obj = new_ico_sphere(2.0, 1, 1.5)
+    name = obj.name
+    result = bpy.ops.object.isoform_smooth(level=2)
+    R.expect(result == {'FINISHED'}, f"operator returned {result}")
+    smooth = bpy.context.view_layer.objects.active
+    R.expect(smooth.name == f"{name}_smooth", f"new object {smooth.name}")
+    R.expect(len(bpy.data.objects[name].data.polygons) == 80, "the source mesh changed")
+    R.expect(len(smooth.data.polygons) == 80 * 16, f"{len(smooth.data.polygons)} triangles")
+    expect_closed_manifold(smooth)
+    base = world_points(bpy.data.objects[name])[triangles_of(bpy.data.objects[name])]
+    flat_gap = 3.0 - np.linalg.norm(base.mean(axis=1), axis=1).min()
+    gap = np.abs(np.linalg.norm(world_points(smooth), axis=1) - 3.0).max()
+    R.expect(flat_gap > 0.15 and gap < flat_gap / 4,
+             f"smooth surface leaves the sphere by up to {gap}; the flat triangles by {flat_gap}")
+    R.expect(smooth.data.materials[0] == obj.data.materials[0], "the material was not copied")
+
+
+def case_smooth_surface_follows_level_and_blend():
+    """Level 0 gives the base triangles' count; printed and squared blends
+    give different surfaces through the same vertices."""
+    obj = new_ico_sphere(1.0, 1, 1.0)
+    bpy.ops.object.select_all(action='DESELECT')
+    bpy.context.view_layer.objects.active = obj
+    R.expect(bpy.ops.object.isoform_smooth(level=0) == {'FINISHED'}, "level 0 failed")
+    R.expect(len(bpy.context.view_layer.objects.active.data.polygons) == 80, "level 0 count")
+    surfaces = []
+    for blend in ("printed", "squared"):
+        bpy.context.view_layer.objects.active = obj
+        R.expect(bpy.ops.object.isoform_smooth(level=3, blend=blend) == {'FINISHED'}, blend)
+        surfaces.append(world_points(bpy.context.view_layer.objects.active))
+    R.expect(surfaces[0].shape == surfaces[1].shape, "blends give different counts")
+    R.expect(np.abs(surfaces[0] - surfaces[1]).max() > 1e-5, "the blend option has no effect")
+
+
+def cases(runner):
+    global R
+    R = runner
+    return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_matches_library,
+            case_reduce_errors_leave_the_mesh, case_smooth_surface_beside_the_mesh,
+            case_smooth_surface_follows_level_and_blend]
