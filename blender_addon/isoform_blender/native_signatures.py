@@ -98,4 +98,19 @@ SIGNATURES = {
     "isoform_patch_evaluate": (_int, [_handle, _size, _i32, _f64, _f64, _f64]),
     # patch, level, progress, out
     "isoform_patch_tessellate": (_int, [_handle, _int, _ptr(structs.Progress), _handle_out]),
+    # Comparison with the Loop limit surface
+    "isoform_compare_options_default": (None, [_ptr(structs.CompareOptions)]),  # options
+    # mesh, reference_or_NULL, options, progress, out
+    "isoform_compare": (_int, [_handle, _handle, _ptr(structs.CompareOptions),
+                               _ptr(structs.Progress), _handle_out]),
+    "isoform_compare_report_surface_count": (_int, [_handle]),  # report
+    "isoform_compare_report_surface_name": (_str, [_handle, _int]),  # report, index
+    # report, index, out
+    "isoform_compare_report_metrics": (_int, [_handle, _int, _ptr(structs.CompareMetrics)]),
+    "isoform_compare_report_reference": (_str, [_handle]),  # report
+    "isoform_compare_report_deviation_unit": (_str, [_handle]),  # report
+    # report, index, out
+    "isoform_compare_report_tessellation": (_int, [_handle, _int, _handle_out]),
+    "isoform_compare_report_write": (_int, [_handle, _str]),  # report, directory
+    "isoform_compare_report_free": (None, [_handle]),  # report
 }

@@ -220,6 +220,65 @@ class PatchStats(ctypes.Structure):
     ]
 
 
+class CompareOptions(ctypes.Structure):
+    """isoform_compare_options (the comparison with the Loop limit surface)."""
+    _fields_ = [
+        ("level", ctypes.c_int),
+        ("reference", ctypes.c_int),
+        ("fit_reference", ctypes.c_int),
+        ("centre", ctypes.c_double * 3),
+        ("radius", ctypes.c_double),
+        ("minor_radius", ctypes.c_double),
+        ("grid", ctypes.c_int),
+        ("isovalue", ctypes.c_double),
+        ("loop_isolation", ctypes.c_int),
+        ("loop_sharp_corners", ctypes.c_int),
+        ("table_triangles", c_long_long),
+        ("input_name", ctypes.c_char_p),
+    ]
+
+
+class CompareStats(ctypes.Structure):
+    """isoform_compare_stats: |x| over samples."""
+    _fields_ = [
+        ("count", c_long_long),
+        ("max", ctypes.c_double),
+        ("rms", ctypes.c_double),
+        ("mean", ctypes.c_double),
+    ]
+
+
+class CompareSpread(ctypes.Structure):
+    """isoform_compare_spread: a signed quantity's distribution."""
+    _fields_ = [
+        ("count", c_long_long),
+        ("p05", ctypes.c_double),
+        ("p50", ctypes.c_double),
+        ("p95", ctypes.c_double),
+        ("mean", ctypes.c_double),
+        ("stddev", ctypes.c_double),
+    ]
+
+
+class CompareMetrics(ctypes.Structure):
+    """isoform_compare_metrics: the measures of one surface."""
+    _fields_ = [
+        ("samples", c_long_long),
+        ("failed_samples", c_long_long),
+        ("deviation", CompareStats),
+        ("data_point_error", CompareStats),
+        ("normal_gap", CompareStats),
+        ("position_gap", CompareStats),
+        ("mean_curvature_jump", CompareStats),
+        ("mean_curvature_error", CompareStats),
+        ("mean_curvature", CompareSpread),
+        ("gauss_curvature", CompareSpread),
+        ("evaluation_seconds", ctypes.c_double),
+        ("seconds_per_million", ctypes.c_double),
+        ("tessellation_triangles", c_long_long),
+    ]
+
+
 # Every mirrored struct by its C name; the layout test walks this table.
 STRUCTS = {
     "isoform_progress": Progress,
@@ -237,4 +296,8 @@ STRUCTS = {
     "isoform_reduce_stats": ReduceStats,
     "isoform_patch_options": PatchOptions,
     "isoform_patch_stats": PatchStats,
+    "isoform_compare_options": CompareOptions,
+    "isoform_compare_stats": CompareStats,
+    "isoform_compare_spread": CompareSpread,
+    "isoform_compare_metrics": CompareMetrics,
 }

@@ -86,3 +86,57 @@ class Patch(native._Handle):
         """A new native.Mesh: every triangle split into 4**level, exact normals."""
         return native._make(native.Mesh, lambda lib, out: lib.patch_tessellate(
             self.handle, int(level), native._progress_pointer(progress), out))
+
+
+REFERENCES = {"none": 0, "sphere": 1, "torus": 2}
+
+
+def compare_options(level=None, reference=None, input_name=None):
+    lib = native.library()
+    options = structs.CompareOptions()
+    lib.compare_options_default(ctypes.byref(options))
+    if level is not None:
+        options.level = int(level)
+    if reference is not None:
+        options.reference = native._choice(REFERENCES, reference, "reference")
+    options.table_triangles = 0
+    if input_name is not None:
+        options.input_name = str(input_name).encode("utf-8")
+    return options
+
+
+def _plain(value):
+    """A ctypes struct (nested ones too) as a dict of Python numbers."""
+    if isinstance(value, ctypes.Structure):
+        return {name: _plain(getattr(value, name)) for name, _ in value._fields_}
+    return value
+
+
+def compare(mesh, progress=None, tessellations=("loop",), **settings):
+    """Measures the surfaces over mesh (linear, loop, the side-vertex one)
+    at the same samples (isoform_compare). Returns a dict: reference, unit,
+    metrics {surface name: nested dict of isoform_compare_metrics} and
+    tessellations {name: native.MeshArrays} for the names asked for."""
+    lib = native.library()
+    options = compare_options(**settings)
+    report = ctypes.c_void_p()
+    lib.check(lib.compare(mesh.handle, None, ctypes.byref(options),
+                          native._progress_pointer(progress), ctypes.byref(report)))
+    try:
+        result = {"reference": lib.compare_report_reference(report).decode("utf-8"),
+                  "unit": lib.compare_report_deviation_unit(report).decode("utf-8"),
+                  "metrics": {}, "tessellations": {}}
+        for index in range(lib.compare_report_surface_count(report)):
+            name = lib.compare_report_surface_name(report, index).decode("utf-8")
+            metrics = structs.CompareMetrics()
+            lib.check(lib.compare_report_metrics(report, index, ctypes.byref(metrics)))
+            result["metrics"][name] = _plain(metrics)
+            if name in tessellations:
+                tessellation = ctypes.c_void_p()
+                lib.check(lib.compare_report_tessellation(report, index,
+                                                          ctypes.byref(tessellation)))
+                with native.Mesh(lib, tessellation.value) as surface:
+                    result["tessellations"][name] = surface.arrays()
+        return result
+    finally:
+        lib.compare_report_free(report)

@@ -1,8 +1,8 @@
 """Registers the add-on's classes and menu entries (bpy only here and below)."""
 import bpy
 
-from . import (ops_curvature, ops_import, ops_reduce, ops_smooth, ops_visualize, ops_volume, panel,
-               settings)
+from . import (ops_compare, ops_curvature, ops_import, ops_reduce, ops_smooth, ops_visualize,
+               ops_volume, panel, settings)
 
 _CLASSES = (
     settings.IsoformSettings,
@@ -11,6 +11,7 @@ _CLASSES = (
     ops_curvature.OBJECT_OT_isoform_curvature,
     ops_reduce.OBJECT_OT_isoform_reduce,
     ops_smooth.OBJECT_OT_isoform_smooth,
+    ops_compare.OBJECT_OT_isoform_compare,
     ops_visualize.OBJECT_OT_isoform_slices,
     ops_visualize.OBJECT_OT_isoform_boxes,
     ops_visualize.OBJECT_OT_isoform_stack,

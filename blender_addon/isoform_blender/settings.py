@@ -183,6 +183,32 @@ class SmoothSettings(SharedSettings):
         row.prop(self, "tension")
 
 
+_REFERENCES = (
+    ("none", "None", "No reference surface: smoothness measures only"),
+    ("sphere", "Sphere", "Deviation from the sphere fitted to the vertices"),
+    ("torus", "Torus", "Deviation from the torus around the z axis fitted to the vertices"),
+)
+
+
+class CompareSettings(SharedSettings):
+    """Mixin: the properties of one comparison with the Loop limit surface."""
+    compare_level: IntProperty(name="Samples", default=8, min=1, max=32, options={'SKIP_SAVE'},
+                               description="Lattice level k: (k+1)(k+2)/2 samples per triangle "
+                                           "on every surface, k^2 triangles in the Loop object")
+    reference: EnumProperty(name="Reference", items=_REFERENCES, default="none",
+                            options={'SKIP_SAVE'})
+
+    _SHARED = ("compare_level", "reference")
+
+    def compare_arguments(self):
+        """Keyword arguments of native_surface.compare (plain values)."""
+        return {"level": self.compare_level, "reference": self.reference}
+
+    def draw_compare_settings(self, layout):
+        layout.prop(self, "compare_level")
+        layout.prop(self, "reference")
+
+
 class IsoformSettings(bpy.types.PropertyGroup, ContourSettings, CurvatureSettings,
-                      ReduceSettings, SmoothSettings):
+                      ReduceSettings, SmoothSettings, CompareSettings):
     """The sidebar's settings, stored in the scene as scene.isoform."""

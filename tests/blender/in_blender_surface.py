@@ -1,5 +1,5 @@
-"""The group "surface" of in_blender.py: Reduce (Chapter 5) and Smooth
-Surface (Chapter 6) on mesh objects. One Blender start runs them all.
+"""The group "surface" of in_blender.py: Reduce (Chapter 5), Smooth Surface
+(Chapter 6) and Compare with Subdivision on mesh objects. One Blender start runs them all.
 
 cases(runner) returns the cases; runner holds in_blender.py's globals (its
 expect, scene_counts, expect_operator_error, mesh_arrays, ARGS).
@@ -146,9 +146,38 @@ def case_smooth_surface_follows_level_and_blend():
     R.expect(np.abs(surfaces[0] - surfaces[1]).max() > 1e-5, "the blend option has no effect")
 
 
+# ---------------------------------------------------------------- compare
+
+def case_compare_adds_the_loop_object_and_stores_metrics():
+    """An icosphere of 320 triangles: a "<name>_loop" object of 320 * 9
+    triangles beside it; the measures stored on the mesh name the three
+    surfaces, the side-vertex surface through the data points, Loop not;
+    running it again replaces the Loop object."""
+    import json
+    obj = new_ico_sphere(1.0, 2, 1.0)
+    name = obj.name
+    result = bpy.ops.object.isoform_compare(compare_level=3, reference='sphere')
+    R.expect(result == {'FINISHED'}, f"operator returned {result}")
+    loop = bpy.data.objects.get(f"{name}_loop")
+    R.expect(loop is not None and len(loop.data.polygons) == 320 * 9,
+             f"loop object {loop and len(loop.data.polygons)}")
+    expect_closed_manifold(loop)
+    stored = json.loads(bpy.data.objects[name]["isoform_compare"])
+    metrics = stored["metrics"]
+    R.expect(set(metrics) == {"linear", "loop", "side-vertex"}, f"surfaces {sorted(metrics)}")
+    R.expect(metrics["side-vertex"]["data_point_error"]["max"] < 1e-5 <
+             metrics["loop"]["data_point_error"]["max"], "data point errors")
+    objects = len(bpy.data.objects)
+    bpy.context.view_layer.objects.active = bpy.data.objects[name]
+    R.expect(bpy.ops.object.isoform_compare(compare_level=2) == {'FINISHED'}, "second run")
+    R.expect(len(bpy.data.objects) == objects, "a second comparison added another object")
+    R.expect(len(bpy.data.objects[f"{name}_loop"].data.polygons) == 320 * 4, "not replaced")
+
+
 def cases(runner):
     global R
     R = runner
     return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_matches_library,
             case_reduce_errors_leave_the_mesh, case_smooth_surface_beside_the_mesh,
-            case_smooth_surface_follows_level_and_blend]
+            case_smooth_surface_follows_level_and_blend,
+            case_compare_adds_the_loop_object_and_stores_metrics]

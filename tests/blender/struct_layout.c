@@ -192,6 +192,53 @@ int main(void) {
   FIELD(isoform_patch_stats, fallback_plane_edges);
   end();
 
+  begin("isoform_compare_options", sizeof(isoform_compare_options));
+  FIELD(isoform_compare_options, level);
+  FIELD(isoform_compare_options, reference);
+  FIELD(isoform_compare_options, fit_reference);
+  FIELD(isoform_compare_options, centre);
+  FIELD(isoform_compare_options, radius);
+  FIELD(isoform_compare_options, minor_radius);
+  FIELD(isoform_compare_options, grid);
+  FIELD(isoform_compare_options, isovalue);
+  FIELD(isoform_compare_options, loop_isolation);
+  FIELD(isoform_compare_options, loop_sharp_corners);
+  FIELD(isoform_compare_options, table_triangles);
+  FIELD(isoform_compare_options, input_name);
+  end();
+
+  begin("isoform_compare_stats", sizeof(isoform_compare_stats));
+  FIELD(isoform_compare_stats, count);
+  FIELD(isoform_compare_stats, max);
+  FIELD(isoform_compare_stats, rms);
+  FIELD(isoform_compare_stats, mean);
+  end();
+
+  begin("isoform_compare_spread", sizeof(isoform_compare_spread));
+  FIELD(isoform_compare_spread, count);
+  FIELD(isoform_compare_spread, p05);
+  FIELD(isoform_compare_spread, p50);
+  FIELD(isoform_compare_spread, p95);
+  FIELD(isoform_compare_spread, mean);
+  FIELD(isoform_compare_spread, stddev);
+  end();
+
+  begin("isoform_compare_metrics", sizeof(isoform_compare_metrics));
+  FIELD(isoform_compare_metrics, samples);
+  FIELD(isoform_compare_metrics, failed_samples);
+  FIELD(isoform_compare_metrics, deviation);
+  FIELD(isoform_compare_metrics, data_point_error);
+  FIELD(isoform_compare_metrics, normal_gap);
+  FIELD(isoform_compare_metrics, position_gap);
+  FIELD(isoform_compare_metrics, mean_curvature_jump);
+  FIELD(isoform_compare_metrics, mean_curvature_error);
+  FIELD(isoform_compare_metrics, mean_curvature);
+  FIELD(isoform_compare_metrics, gauss_curvature);
+  FIELD(isoform_compare_metrics, evaluation_seconds);
+  FIELD(isoform_compare_metrics, seconds_per_million);
+  FIELD(isoform_compare_metrics, tessellation_triangles);
+  end();
+
   printf("\n}}\n");
   return 0;
 }

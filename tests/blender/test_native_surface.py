@@ -110,10 +110,35 @@ def case_patch_errors_name_the_sample():
                       "pairs")
 
 
+# ---------------------------------------------------------------- compare
+
+def case_compare_loop_against_side_vertex():
+    """The sphere contour reduced to 600 triangles against the fitted sphere:
+    the side-vertex surface passes through the vertices, Loop's limit does
+    not; both are far closer to the sphere than the flat triangles; the Loop
+    tessellation has level^2 triangles per base triangle and is closed."""
+    with sphere_contour() as mesh:
+        surface.reduce(mesh, keep_fraction=600 / mesh.triangle_count)
+        result = surface.compare(mesh, level=4, reference="sphere")
+        metrics = result["metrics"]
+        expect(set(metrics) == {"linear", "loop", "side-vertex"}, f"surfaces {sorted(metrics)}")
+        expect(result["unit"] == "world units", f"unit {result['unit']!r}")
+        side, loop, flat = metrics["side-vertex"], metrics["loop"], metrics["linear"]
+        expect(side["data_point_error"]["max"] < 1e-6, f"side-vertex {side['data_point_error']}")
+        expect(loop["data_point_error"]["max"] > 1e-4, f"loop {loop['data_point_error']}")
+        for name in ("side-vertex", "loop"):
+            expect(metrics[name]["deviation"]["rms"] < flat["deviation"]["rms"] / 3,
+                   f"{name} deviation {metrics[name]['deviation']} vs flat {flat['deviation']}")
+        arrays = result["tessellations"]["loop"]
+        expect(len(arrays.triangles) == 16 * mesh.triangle_count and arrays.stats.boundary_edges == 0,
+               f"loop tessellation {len(arrays.triangles)} triangles, {arrays.stats}")
+
+
 GROUPS = {
     "reduce": [case_reduce_keeps_the_fraction_and_the_topology, case_reduce_matches_cli,
                case_reduce_errors],
-    "patch": [case_patch_interpolates_and_tessellates, case_patch_errors_name_the_sample],
+    "patch": [case_patch_interpolates_and_tessellates, case_patch_errors_name_the_sample,
+              case_compare_loop_against_side_vertex],
 }
 
 
