@@ -72,7 +72,10 @@ class OBJECT_OT_isoform_compare(bpy.types.Operator, CompareSettings, SmoothSetti
         name = self._source_name + LOOP_SUFFIX
         old = bpy.data.objects.get(name)
         if old is not None and old.type == 'MESH':  # a new comparison replaces the old object
+            old_mesh = old.data
             bpy.data.objects.remove(old)
+            if old_mesh.users == 0:
+                bpy.data.meshes.remove(old_mesh)
         mesh_build.add_mesh_object(context, name, loop, source.matrix_world)
         stored = {key: result[key] for key in ("reference", "unit", "metrics")}
         source[PROPERTY] = json.dumps(stored)
