@@ -606,6 +606,122 @@ ISOFORM_API isoform_status isoform_volume_curvature_stats_get(const isoform_volu
  * "seed's platelet fit"; "unknown" for others. */
 ISOFORM_API const char* isoform_graph_fit_name(int fit);
 
+/* ------------------------------------------------------------------ */
+/* Comparison with the Loop limit surface (issue 5)                   */
+/* ------------------------------------------------------------------ */
+
+/* isoform_compare samples several smooth surfaces over the same base
+ * triangles at the same barycentric points (weight 1-u-v, u, v on the
+ * triangle's vertices t0, t1, t2): "linear" (the flat triangles) and "loop"
+ * (the Loop limit surface, evaluated with OpenSubdiv: adaptive refinement,
+ * Gregory end caps, double precision). Measures: deviation from a reference,
+ * error at the data points (the base vertices), normal gap and
+ * mean-curvature jump across edges, curvature spread, time per million
+ * samples, and the triangles of each surface's tessellation. */
+
+/* The stage isoform_compare reports while it samples (isoform_progress). */
+#define ISOFORM_STAGE_COMPARE 16
+
+typedef enum isoform_reference_kind {
+  ISOFORM_REFERENCE_NONE = 0,   /* no deviation measured */
+  ISOFORM_REFERENCE_SPHERE = 1, /* exact distance from a sphere, world units */
+  ISOFORM_REFERENCE_TORUS = 2,  /* exact distance from a torus around the z axis, world units */
+  ISOFORM_REFERENCE_VOLUME = 3  /* |f(x) - iso| / |grad f| of a grid's trilinear interpolant, voxels */
+} isoform_reference_kind;
+
+typedef struct isoform_compare_options {
+  int level;             /* lattice level k, 1..64: (k+1)(k+2)/2 samples and k^2 tessellation
+                            triangles per base triangle, k samples per edge; default 8 */
+  int reference;         /* isoform_reference_kind; default ISOFORM_REFERENCE_NONE (VOLUME
+                            is implied when a volume is passed) */
+  int fit_reference;     /* sphere, torus: 1 (default) takes the centre as the vertices'
+                            centroid and the radii as mean distances (torus: from the z axis
+                            through the centre, then from that circle); 0 uses the fields below */
+  double centre[3];      /* sphere, torus: centre, world units; default 0, 0, 0 */
+  double radius;         /* sphere radius or torus major radius, world units; default 1 */
+  double minor_radius;   /* torus tube radius, world units; default 0.25 */
+  int grid;              /* volume: grid index (isoform_volume_find_grid); default -1 = the
+                            first scalar grid */
+  double isovalue;       /* volume: the level f = iso that is the reference; default 0 */
+  int loop_isolation;    /* Loop: adaptive isolation of irregular vertices, 1..10; default 6 */
+  int loop_sharp_corners;/* Loop boundary rule: 1 (default) boundary edges are B-spline curves
+                            and valence-2 boundary vertices corners; 0 corners are smoothed */
+  long long table_triangles; /* base triangles whose samples go into samples.csv, evenly
+                            spaced; default 2000; 0 = none */
+  const char* input_name;/* names the base mesh in the report's texts (copied); default NULL */
+} isoform_compare_options;
+
+ISOFORM_API void isoform_compare_options_default(isoform_compare_options* options);
+
+typedef struct isoform_compare_report isoform_compare_report;
+
+/* |x| statistics over samples: count, largest, root mean square, mean. */
+typedef struct isoform_compare_stats {
+  long long count;
+  double max, rms, mean;
+} isoform_compare_stats;
+
+/* A signed quantity's distribution: nearest-rank percentiles, mean, standard deviation. */
+typedef struct isoform_compare_spread {
+  long long count;
+  double p05, p50, p95, mean, stddev;
+} isoform_compare_spread;
+
+typedef struct isoform_compare_metrics {
+  long long samples;                 /* lattice samples evaluated */
+  long long failed_samples;          /* of those, where the surface is undefined */
+  isoform_compare_stats deviation;   /* from the reference, in its unit; count 0 without one */
+  isoform_compare_stats data_point_error;   /* |surface at a vertex - the vertex|, world units */
+  isoform_compare_stats normal_gap;         /* angle of the two sides' normals at edge samples, radians */
+  isoform_compare_stats position_gap;       /* distance of the two sides' points there, world units */
+  isoform_compare_stats mean_curvature_jump;  /* |H left - H right| there, 1/world unit */
+  isoform_compare_stats mean_curvature_error; /* |H - H of the reference| (sphere, torus only) */
+  isoform_compare_spread mean_curvature;    /* H over the lattice samples, 1/world unit */
+  isoform_compare_spread gauss_curvature;   /* K over the lattice samples, 1/world unit^2 */
+  double evaluation_seconds;         /* evaluating the lattice samples, one thread */
+  double seconds_per_million;        /* the same per million samples */
+  long long tessellation_triangles;  /* triangles of the surface's tessellation at the level */
+} isoform_compare_metrics;
+
+/* Builds the surfaces over mesh and measures them. reference_or_NULL is the
+ * volume whose grid options->grid at options->isovalue is the reference (it
+ * implies ISOFORM_REFERENCE_VOLUME); NULL with reference VOLUME is an error.
+ * Needs a triangle mesh OpenSubdiv accepts (manifold enough to refine).
+ * Single-threaded; time O(triangles * level^2). options and progress may be
+ * NULL. On failure *out is NULL. */
+ISOFORM_API isoform_status isoform_compare(const isoform_mesh* mesh, const isoform_volume* reference_or_NULL,
+                                           const isoform_compare_options* options,
+                                           isoform_progress* progress, isoform_compare_report** out);
+
+/* Number of surfaces measured (2: "linear", "loop"), or 0 for NULL. */
+ISOFORM_API int isoform_compare_report_surface_count(const isoform_compare_report* report);
+/* The name of surface index, valid as long as the report; NULL when index is out of range. */
+ISOFORM_API const char* isoform_compare_report_surface_name(const isoform_compare_report* report, int index);
+/* Copies the measures of surface index. */
+ISOFORM_API isoform_status isoform_compare_report_metrics(const isoform_compare_report* report, int index,
+                                                          isoform_compare_metrics* out);
+/* What deviation was measured from ("" without a reference) and its unit
+ * ("world units" or "voxels"; "" without one); valid as long as the report. */
+ISOFORM_API const char* isoform_compare_report_reference(const isoform_compare_report* report);
+ISOFORM_API const char* isoform_compare_report_deviation_unit(const isoform_compare_report* report);
+
+/* A new mesh: the tessellation of surface index at the report's level
+ * (lattice points as vertices, shared along base edges, the surface's unit
+ * normals; where a surface is undefined, the flat triangle's point). Free it
+ * with isoform_mesh_free; it may be saved or copied out like any mesh. */
+ISOFORM_API isoform_status isoform_compare_report_tessellation(const isoform_compare_report* report, int index,
+                                                               isoform_mesh** out);
+
+/* Writes report.json (every measure), samples.csv (the sample table: triangle,
+ * u, v, then x y z deviation mean gauss per surface) and report.md (the table)
+ * into directory, which must exist. Each file is written to a temporary name
+ * and renamed once all three are complete; a failure leaves none of them
+ * half-written (a failure between two renames can leave the earlier ones). */
+ISOFORM_API isoform_status isoform_compare_report_write(const isoform_compare_report* report,
+                                                        const char* directory);
+
+ISOFORM_API void isoform_compare_report_free(isoform_compare_report* report);
+
 #ifdef __cplusplus
 }
 #endif
