@@ -46,7 +46,7 @@ CURVATURE_METHODS = {"seed": 0, "quadric": 1, "cubic": 2, "quartic": 3}
 CURVATURE_QUANTITIES = {"k1": 0, "k2": 1, "mean": 2, "gauss": 3, "absolute": 4}
 CURVATURE_DIRECTIONS = {"d1": 5, "d2": 6}
 STAGE_NAMES = {0: "idle", 1: "loading", 2: "contouring", 3: "merging", 4: "topology", 5: "done",
-               6: "curvature", 8: "reduction", 10: "smooth surface"}
+               6: "curvature", 8: "reduction", 10: "smooth surface", 16: "comparison"}
 
 
 class LibraryError(Exception):
