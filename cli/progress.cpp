@@ -48,6 +48,7 @@ const char* stage_name(int stage) {
     case ISOFORM_STAGE_MERGE: return "merge";
     case ISOFORM_STAGE_TOPOLOGY: return "topology";
     case ISOFORM_STAGE_DONE: return "done";
+    case ISOFORM_STAGE_PATCH: return "patch";
     default: return "start";
   }
 }
