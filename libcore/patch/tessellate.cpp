@@ -130,7 +130,8 @@ Mesh tessellate(const SideVertexSurface& s, int level, const Progress& progress,
         const EdgeValue<double> ev = edge_eval(s.edge_curve(e), double(k) / n);
         put(m, l.edge_base + e * size_t(n - 1) + size_t(k - 1), ev.point, ev.normal);
       }
-    done.fetch_add(r.size());
+    const size_t now = done.fetch_add(r.size()) + r.size();
+    progress.fraction(float(double(now) / double(work ? work : 1)));
   });
   if (cancelled || progress.cancelled()) throw Cancelled("tessellation cancelled");
   // Phase 3: interior samples and the triangles of each base triangle.

@@ -6,6 +6,7 @@
 
 #include "libcore/errors.h"
 #include "libcore/patch/tessellate.h"
+#include "libcore/topology.h"
 #include "patch_fixtures.h"
 
 namespace isoform::patch {
@@ -55,6 +56,27 @@ TEST(Tessellate, SamplesLieOnTheSurfaceWithItsNormals) {
       EXPECT_LT(norm(nn - V3d::from(x.normal)), 1e-6);
     }
   }
+}
+
+TEST(Tessellate, NonManifoldEdgesStaySharedAndOppositeNormalsStayFinite) {
+  // Three triangles on the edge 0-1 (a book of three pages).
+  Mesh m;
+  m.precise_points = {0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -0.5, 0.8, 0.5, -0.5, -0.8};
+  m.points.assign(m.precise_points.begin(), m.precise_points.end());
+  m.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0.8, 0.6, 0, 0.8, -0.6};
+  m.triangles = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  compute_topology(m);
+  ASSERT_EQ(m.stats.nonmanifold_edges, 1);
+  const Mesh t = tessellate(SideVertexSurface(m, {}), 2, Progress(nullptr));
+  EXPECT_EQ(t.stats.nonmanifold_edges, 4);  // the shared edge's 4 segments, welded
+  EXPECT_EQ(t.vertex_count(), 5 + 7 * 3 + 3 * 3);
+  // Opposite normals on an edge: a defined, finite tessellation.
+  Mesh o = test::tetrahedron();
+  for (int a = 0; a < 3; ++a) o.normals[3 + a] = -o.normals[a];
+  const Mesh to = tessellate(SideVertexSurface(o, {}), 3, Progress(nullptr));
+  for (double c : to.precise_points) ASSERT_TRUE(std::isfinite(c));
+  for (float c : to.normals) ASSERT_TRUE(std::isfinite(c));
+  EXPECT_EQ(to.stats.boundary_edges, 0);
 }
 
 TEST(Tessellate, RefusesLevelsOutOfRangeAndStopsWhenCancelled) {
