@@ -672,7 +672,7 @@ ISOFORM_API isoform_status isoform_patch_stats_get(const isoform_patch* patch, i
  * NULL skips them). ISOFORM_ERR_INVALID_ARGUMENT, naming the first bad
  * sample, for a triangle out of range, (u, v) outside the triangle, or data
  * that leave the surface undefined there; outputs are then unspecified.
- * Thread-safe on one patch. */
+ * Runs on all cores (TBB) for large counts; thread-safe on one patch. */
 ISOFORM_API isoform_status isoform_patch_evaluate(const isoform_patch* patch, size_t count, const int32_t* triangles,
                                                   const double* uv, double* points, double* normals);
 

@@ -1,7 +1,11 @@
 // The C API's side-vertex surface calls (Hamann 1991, Chapter 6).
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <memory>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "../errors.h"
 #include "../patch/side_vertex_surface.h"
@@ -85,6 +89,7 @@ isoform_status isoform_patch_evaluate(const isoform_patch* patch, size_t count, 
     if (!patch || (count && (!triangles || !uv)))
       return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_patch_evaluate: NULL argument");
     const isoform::patch::SideVertexSurface& s = *patch->surface;
+    // Phase 1: check every sample (cheap, serial: the first bad one is named).
     for (size_t k = 0; k < count; ++k) {
       const int32_t t = triangles[k];
       const double u = uv[2 * k], v = uv[2 * k + 1];
@@ -93,13 +98,28 @@ isoform_status isoform_patch_evaluate(const isoform_patch* patch, size_t count, 
                                                       std::to_string(s.triangle_count()) + ")");
       if (!(u >= 0.0) || !(v >= 0.0) || !(u + v <= 1.0 + 1e-12))
         return fail(ISOFORM_ERR_INVALID_ARGUMENT, sample_name(k, t, u, v) + ": outside the triangle");
-      isoform::SurfaceSample x;
-      if (!s.evaluate_order(size_t(t), u, v, x, false))
-        return fail(ISOFORM_ERR_INVALID_ARGUMENT, sample_name(k, t, u, v) + ": the surface is undefined there");
-      for (int a = 0; a < 3; ++a) {
-        if (points) points[3 * k + a] = x.point[a];
-        if (normals) normals[3 * k + a] = x.normal[a];
+    }
+    // Phase 2: evaluate in parallel; remember the first undefined sample.
+    std::atomic<size_t> first_bad{count};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1024), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t k = r.begin(); k < r.end(); ++k) {
+        isoform::SurfaceSample x;
+        if (!s.evaluate_order(size_t(triangles[k]), uv[2 * k], uv[2 * k + 1], x, false)) {
+          size_t seen = first_bad.load();
+          while (k < seen && !first_bad.compare_exchange_weak(seen, k)) {
+          }
+          continue;
+        }
+        for (int a = 0; a < 3; ++a) {
+          if (points) points[3 * k + a] = x.point[a];
+          if (normals) normals[3 * k + a] = x.normal[a];
+        }
       }
+    });
+    if (first_bad < count) {
+      const size_t k = first_bad;
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT,
+                  sample_name(k, triangles[k], uv[2 * k], uv[2 * k + 1]) + ": the surface is undefined there");
     }
     return ISOFORM_OK;
   });

@@ -81,6 +81,41 @@ static void test_tetrahedron(void) {
   isoform_patch_free(patch);
 }
 
+/* Many samples at once (the parallel path) give what one at a time gives. */
+static void test_many_samples(void) {
+  isoform_mesh* m = tetrahedron();
+  isoform_patch* patch = NULL;
+  const size_t n = 5000;
+  int32_t* tri = malloc(n * sizeof *tri);
+  double* uv = malloc(2 * n * sizeof *uv);
+  double* all = malloc(3 * n * sizeof *all);
+  double one[3];
+  size_t k, mismatches = 0;
+  CHECK(isoform_patch_create(m, NULL, &patch) == ISOFORM_OK);
+  for (k = 0; k < n; ++k) {
+    tri[k] = (int32_t)(k % 4);
+    uv[2 * k] = (double)(k % 71) / 71.0 * 0.5;
+    uv[2 * k + 1] = (double)(k % 53) / 53.0 * 0.5;
+  }
+  CHECK(isoform_patch_evaluate(patch, n, tri, uv, all, NULL) == ISOFORM_OK);
+  for (k = 0; k < n; k += 7) {
+    CHECK(isoform_patch_evaluate(patch, 1, tri + k, uv + 2 * k, one, NULL) == ISOFORM_OK);
+    if (one[0] != all[3 * k] || one[1] != all[3 * k + 1] || one[2] != all[3 * k + 2]) ++mismatches;
+  }
+  CHECK(mismatches == 0);
+  /* The first bad sample is the one named. */
+  uv[2 * 4000] = 0.9;
+  uv[2 * 4000 + 1] = 0.9;
+  uv[2 * 4500] = -1;
+  CHECK(isoform_patch_evaluate(patch, n, tri, uv, all, NULL) == ISOFORM_ERR_INVALID_ARGUMENT);
+  CHECK(strstr(isoform_last_error(), "sample 4000 ") != NULL);
+  free(tri);
+  free(uv);
+  free(all);
+  isoform_patch_free(patch);
+  isoform_mesh_free(m);
+}
+
 static void test_bad_input(void) {
   isoform_mesh* m = tetrahedron();
   isoform_patch* patch = NULL;
@@ -109,6 +144,7 @@ static void test_bad_input(void) {
 int main(void) {
   test_options_default();
   test_tetrahedron();
+  test_many_samples();
   test_bad_input();
   if (check_failures) fprintf(stderr, "%d check(s) failed\n", check_failures);
   return check_failures ? 1 : 0;
