@@ -68,5 +68,6 @@ Command add_stack_command(CLI::App& parent);
 Command add_curvature_volume_command(CLI::App& parent);
 Command add_compare_command(CLI::App& parent);
 Command add_reduce_command(CLI::App& parent);
+Command add_patch_command(CLI::App& parent);
 
 }  // namespace isoform::cli

@@ -63,7 +63,8 @@ int main(int argc, char** argv) {
       isoform::cli::add_stack_command(app),
       isoform::cli::add_curvature_volume_command(app),
       isoform::cli::add_compare_command(app),
-      isoform::cli::add_reduce_command(app)};
+      isoform::cli::add_reduce_command(app),
+      isoform::cli::add_patch_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

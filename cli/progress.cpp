@@ -51,6 +51,7 @@ const char* stage_name(int stage) {
     case ISOFORM_STAGE_COMPARE: return "compare";
     case ISOFORM_STAGE_CURVATURE: return "curvature";
     case ISOFORM_STAGE_REDUCE: return "reduce";
+    case ISOFORM_STAGE_PATCH: return "patch";
     default: return "start";
   }
 }

@@ -807,6 +807,90 @@ ISOFORM_API isoform_status isoform_reduce(isoform_mesh* mesh, const isoform_redu
  * when it was never reduced. */
 ISOFORM_API isoform_status isoform_mesh_reduce_stats(const isoform_mesh* mesh, isoform_reduce_stats* out);
 
+/* ------------------------------------------------------------------ */
+/* Side-vertex surfaces (Hamann 1991, Chapter 6)                      */
+/* ------------------------------------------------------------------ */
+
+/* A smooth surface over a triangle mesh with vertex normals: over each
+ * triangle, three building blocks made by radial projection from each vertex
+ * to a conic on the opposite edge, blended. It passes through every vertex
+ * with the given normal there and is tangent-plane continuous across every
+ * edge (neighbouring patches share each edge's conic and the normals along
+ * it). Parameters: triangle t of the mesh's triangle table and barycentric
+ * (u, v), weight 1-u-v on its first vertex, u on its second, v on its third;
+ * u, v >= 0, u + v <= 1. Coordinates are the mesh's (world units). */
+typedef struct isoform_patch isoform_patch;
+
+/* The progress stage of isoform_patch_tessellate (an isoform_stage value). */
+#define ISOFORM_STAGE_PATCH 10
+
+typedef enum isoform_patch_blend {
+  ISOFORM_PATCH_BLEND_PRINTED = 0, /* w_i ~ u_j u_k, as printed in (6.2)-(6.3) */
+  ISOFORM_PATCH_BLEND_SQUARED = 1  /* w_i ~ (u_j u_k)^2: Theorem 6.1 (iii) holds (default:
+                                      fewer sharp turns near edges, docs/patch.md) */
+} isoform_patch_blend;
+
+typedef struct isoform_patch_options {
+  int blend;        /* isoform_patch_blend; default ISOFORM_PATCH_BLEND_SQUARED */
+  double tension;   /* weight omega of every conic, > 0 (about omega where it is below
+                       the automatic sin(gamma/2), never above it; lower pulls the
+                       surface toward the triangles); 0 (default) = automatic,
+                       sin(gamma/2) of Theorem 6.3 */
+  size_t edge_tension_count;            /* per-edge weights given below; default 0 */
+  const int32_t* edge_tension_vertices; /* 2 per edge: its vertex indices (either order);
+                                           default NULL; copied at create */
+  const double* edge_tension_values;    /* 1 per edge: omega > 0 (as tension); default NULL */
+} isoform_patch_options;
+
+ISOFORM_API void isoform_patch_options_default(isoform_patch_options* options);
+
+/* What isoform_patch_create met. */
+typedef struct isoform_patch_stats {
+  long long triangles, edges;
+  long long nonconvex_edges;       /* edge conics with an inflection (Definition 6.3) */
+  long long opposite_normal_edges; /* edges whose end normals are opposite: a finite curve
+                                      in the plane of the chord and the first normal */
+  long long fallback_plane_edges;  /* edges whose data define no conic plane */
+} isoform_patch_stats;
+
+/* Builds the surface over mesh (copied: the mesh may be freed after) from
+ * its points, triangles and normals. options may be NULL (defaults). Errors
+ * (ISOFORM_ERR_INVALID_ARGUMENT, naming the vertex or triangle): normals
+ * missing, zero or not finite; a triangle with a repeated or coincident
+ * vertex; bad options or an edge weight for an edge the mesh lacks.
+ * Non-manifold and open meshes are accepted. O(n log n). */
+ISOFORM_API isoform_status isoform_patch_create(const isoform_mesh* mesh, const isoform_patch_options* options,
+                                                isoform_patch** out);
+
+ISOFORM_API void isoform_patch_free(isoform_patch* patch);
+
+ISOFORM_API isoform_status isoform_patch_stats_get(const isoform_patch* patch, isoform_patch_stats* out);
+
+/* Evaluates count samples: sample k is triangle triangles[k] at
+ * (uv[2k], uv[2k+1]). Writes 3 doubles per sample to points and to normals
+ * (the exact unit normal, du x dv, oriented like the triangle's winding;
+ * NULL skips them). ISOFORM_ERR_INVALID_ARGUMENT, naming the first bad
+ * sample, for a triangle out of range, (u, v) outside the triangle, or data
+ * that leave the surface undefined there; outputs are then unspecified.
+ * Runs on all cores (TBB) for large counts; thread-safe on one patch. */
+ISOFORM_API isoform_status isoform_patch_evaluate(const isoform_patch* patch, size_t count, const int32_t* triangles,
+                                                  const double* uv, double* points, double* normals);
+
+/* Tessellates the surface into a new mesh: each triangle into 4^level
+ * triangles (2^level steps per edge), level 0..10. Samples on a mesh edge
+ * are computed once from its shared curve, so the result is closed and
+ * manifold wherever the input is. Vertex normals are the exact normals,
+ * turned to the side of the input normals; no vertex is NaN (where the data
+ * leave the surface undefined, the flat triangle's point). progress may be
+ * NULL; stage ISOFORM_STAGE_PATCH. */
+ISOFORM_API isoform_status isoform_patch_tessellate(const isoform_patch* patch, int level,
+                                                    isoform_progress* progress, isoform_mesh** out);
+
+/* 1 when the mesh's normals were estimated from its points (it was read from
+ * a file without normals, or made from arrays), 0 when they came from the
+ * file, a contour or isoform_mesh_set_normals. */
+ISOFORM_API int isoform_mesh_normals_estimated(const isoform_mesh* mesh);
+
 #ifdef __cplusplus
 }
 #endif

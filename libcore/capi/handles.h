@@ -23,6 +23,8 @@ struct isoform_volume {
 
 struct isoform_mesh {
   isoform::Mesh mesh;
+  // True when the normals were estimated from the points (none in the input).
+  bool normals_estimated = false;
   // The quantity and robust range of the curvature colours, when computed.
   int curvature_color_by = 2;
   double curvature_color_range[2] = {0.0, 0.0};

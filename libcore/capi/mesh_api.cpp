@@ -67,6 +67,7 @@ isoform_status mesh_from_arrays(const Real* points, size_t n, const int32_t* tri
     }
     mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
     finish(mesh->mesh, what);
+    mesh->normals_estimated = true;
     *out = mesh.release();
     return ISOFORM_OK;
   });
@@ -152,6 +153,7 @@ isoform_status isoform_mesh_set_normals(isoform_mesh* mesh, const float* normals
       for (int a = 0; a < 3; ++a) q[a] = float(q[a] / len);
     }
     mesh->mesh.normals = std::move(unit);
+    mesh->normals_estimated = false;
     return ISOFORM_OK;
   });
 }
@@ -162,6 +164,7 @@ isoform_status isoform_mesh_load(const char* path, isoform_mesh** out) {
     *out = nullptr;
     auto mesh = std::make_unique<isoform_mesh>();
     mesh->mesh = isoform::load_mesh(path);
+    mesh->normals_estimated = mesh->mesh.normals.size() != mesh->mesh.points.size();
     finish(mesh->mesh, path);
     *out = mesh.release();
     return ISOFORM_OK;
@@ -177,5 +180,7 @@ isoform_status isoform_mesh_save(const isoform_mesh* mesh, const char* path) {
 }
 
 void isoform_mesh_free(isoform_mesh* mesh) { delete mesh; }
+
+int isoform_mesh_normals_estimated(const isoform_mesh* mesh) { return mesh && mesh->normals_estimated ? 1 : 0; }
 
 }  // extern "C"

@@ -44,10 +44,16 @@ struct Conic {
   uint8_t flags = 0;
 };
 
-// NOTE: a sine below this is treated as zero: it keeps the end speed of a
-// curve positive where a tangent lies exactly on the chord (L01 ~ sin beta),
-// so the boundary tangent, and the normal built on it, stays defined.
-constexpr double kMinSine = 1e-9;
+// NOTE: the lengths (6.9) depend on the ratios sin(beta) / cos(gamma/2) and
+// sin(alpha) / cos(gamma/2), which tend to 2 beta / (alpha + beta) as the data
+// become straight: a limit that depends on the ratio of two vanishing angles,
+// so float noise in nearly equal normals (flat parts of a contour) throws the
+// interior points anywhere between the ends and the curve's end speed to
+// zero. Both ratios are taken as (sin + kFlatAngle) / (cos(gamma/2) +
+// kFlatAngle): unchanged for isosceles data (circles stay exact), the
+// straight limit becomes the uniform one (ratio 1), and for angles well above
+// kFlatAngle radians the change is below kFlatAngle / angle relative.
+constexpr double kFlatAngle = 1e-4;
 
 namespace detail {
 
@@ -111,8 +117,7 @@ Conic<T> make_conic(const V3<T>& b0, const V3<T>& n0, const V3<T>& b3, const V3<
   if (value_of(s0) * value_of(s3) > 0.0) c.flags |= kConicNonConvex;
   const T alpha = abs(atan2(s0, dot(c.t0, dh)));
   const T beta = abs(atan2(s3, dot(c.t3, dh)));
-  const T sin_alpha = sqrt(s0 * s0 + kMinSine * kMinSine);
-  const T sin_beta = sqrt(s3 * s3 + kMinSine * kMinSine);
+  const T sin_alpha = abs(s0), sin_beta = abs(s3);
   // gamma = pi - alpha - beta: sin(gamma/2) = cos(h), cos(gamma/2) = sin(h).
   const T half = 0.5 * (alpha + beta);
   T a = cos(half);
@@ -120,12 +125,8 @@ Conic<T> make_conic(const V3<T>& b0, const V3<T>& n0, const V3<T>& b3, const V3<
   const T q = 1.0 / sqrt(1.0 + (a * inv_tension) * (a * inv_tension));
   const T omega = q * a;
   const T cos_half_gamma = sin(half);
-  T ratio_0 = T(1.0), ratio_3 = T(1.0);  // sin(beta), sin(alpha) over cos(gamma/2)
-  // NOTE: both angles ~0 (straight data): the isosceles limit, ratio 1.
-  if (value_of(cos_half_gamma) > 1e-12) {
-    ratio_0 = sin_beta / cos_half_gamma;
-    ratio_3 = sin_alpha / cos_half_gamma;
-  }
+  const T inv_den = 1.0 / (cos_half_gamma + kFlatAngle);
+  const T ratio_0 = (sin_beta + kFlatAngle) * inv_den, ratio_3 = (sin_alpha + kFlatAngle) * inv_den;
   const T scale = q * len / (1.0 + 2.0 * omega);
   c.b[1] = b0 + (scale * ratio_0) * c.t0;
   c.b[2] = b3 - (scale * ratio_3) * c.t3;

@@ -35,7 +35,7 @@ EdgeValue<T> edge_eval(const EdgeCurve& e, const T& t) {
   const ConicValue<T> cv = conic_eval(c, t);
   EdgeValue<T> r;
   r.point = cv.point;
-  // NOTE: the end speed is positive (kMinSine), so T(t) is defined on [0, 1];
+  // NOTE: the end speed is positive (kFlatAngle), so T(t) is defined on [0, 1];
   // a degenerate (point) edge has none, and gets the interpolated angle
   // about a fixed frame instead.
   V3<T> tangent = cv.tangent;

@@ -222,9 +222,13 @@ bool SideVertexSurface::corner(size_t tri, int i, SurfaceSample& out) const {
 }
 
 bool SideVertexSurface::evaluate(size_t tri, double u, double v, SurfaceSample& out) const {
+  return evaluate_order(tri, u, v, out, options_.second_derivatives);
+}
+
+bool SideVertexSurface::evaluate_order(size_t tri, double u, double v, SurfaceSample& out, bool second) const {
   if (tri >= triangle_count() || !(u >= 0.0) || !(v >= 0.0) || !(u + v <= 1.0 + 1e-12)) return false;
   bool inside = false;
-  if (options_.second_derivatives) {
+  if (second) {
     V3<Jet<true>> p;
     inside = patch_point(*this, tri, Jet<true>::variable(u, 0), Jet<true>::variable(v, 1), p);
     if (inside) fill(p, out);

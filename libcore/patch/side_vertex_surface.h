@@ -71,6 +71,9 @@ class SideVertexSurface final : public TriangleSurface {
   // Point, exact normal and derivatives; false (sample unspecified) where
   // u, v lie outside the triangle or the data make the surface undefined.
   bool evaluate(size_t triangle, double u, double v, SurfaceSample& out) const override;
+  // As evaluate, with second derivatives only when `second` (whatever the
+  // options say).
+  bool evaluate_order(size_t triangle, double u, double v, SurfaceSample& out, bool second) const;
   // The point only (the fast path of tessellation); false as above.
   bool point(size_t triangle, double u, double v, V3d& out) const;
 

@@ -31,46 +31,46 @@ struct V3 {
 using V3d = V3<double>;
 
 template <class T>
-V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+ISOFORM_JET_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class T>
-V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+ISOFORM_JET_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <class T>
-V3<T> operator-(const V3<T>& a) {
+ISOFORM_JET_INLINE V3<T> operator-(const V3<T>& a) {
   return {-a.x, -a.y, -a.z};
 }
 template <class T, class S>
-V3<T> operator*(const S& s, const V3<T>& a) {
+ISOFORM_JET_INLINE V3<T> operator*(const S& s, const V3<T>& a) {
   return {a.x * s, a.y * s, a.z * s};
 }
 template <class T>
-T dot(const V3<T>& a, const V3<T>& b) {
+ISOFORM_JET_INLINE T dot(const V3<T>& a, const V3<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <class T>
-V3<T> cross(const V3<T>& a, const V3<T>& b) {
+ISOFORM_JET_INLINE V3<T> cross(const V3<T>& a, const V3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class T>
-T norm(const V3<T>& a) {
+ISOFORM_JET_INLINE T norm(const V3<T>& a) {
   return sqrt(dot(a, a));
 }
 template <class T>
-double norm_value(const V3<T>& a) {
+ISOFORM_JET_INLINE double norm_value(const V3<T>& a) {
   const double x = value_of(a.x), y = value_of(a.y), z = value_of(a.z);
   return std::sqrt(x * x + y * y + z * z);
 }
 // a / |a|; the caller makes sure |a| > 0.
 template <class T>
-V3<T> unit(const V3<T>& a) {
+ISOFORM_JET_INLINE V3<T> unit(const V3<T>& a) {
   const T n = norm(a);
   return (T(1.0) / n) * a;
 }
 template <class T>
-V3<double> values(const V3<T>& a) {
+ISOFORM_JET_INLINE V3<double> values(const V3<T>& a) {
   return {value_of(a.x), value_of(a.y), value_of(a.z)};
 }
 

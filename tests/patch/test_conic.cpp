@@ -54,6 +54,15 @@ TEST(Conic, FlatDataGiveAStraightLineWithLinearParameter) {
   }
 }
 
+TEST(Conic, NearlyStraightDataKeepTheirInteriorPointsNearThirds) {
+  // Normals equal up to float noise (1e-8 rad, in unequal amounts): the
+  // printed ratios sin(beta) / cos(gamma/2) would put b2 on b3 here.
+  const V3d a(0, 0, 0), b(1, 0, 0);
+  const Conic<double> c = make_conic(a, unit(V3d(-1e-9, 0, 1)), b, unit(V3d(-3e-8, 0, 1)), 0.0);
+  EXPECT_NEAR(norm(c.b[1] - c.b[0]), 1.0 / 3, 1e-3);
+  EXPECT_NEAR(norm(c.b[3] - c.b[2]), 1.0 / 3, 1e-3);
+}
+
 TEST(Conic, NonConvexDataGiveOneInflectionAndNoLoop) {
   // Both end tangents rise 0.5 rad above the chord: an S-curve.
   const double a = 0.5;
