@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -47,7 +48,7 @@ struct Quadratic {
   double value(double u, double v) const { return c20 * u * u + c11 * u * v + c10 * u + c02 * v * v + c01 * v + c00; }
 };
 
-Quadratic fit_quadratic(const std::vector<Eigen::Vector3d>& pts, const Frame& f, double h) {
+Quadratic fit_quadratic(const std::vector<Eigen::Vector3d>& pts, const Frame& f, double h, bool plane_only) {
   Quadratic q;
   Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
@@ -65,7 +66,7 @@ Quadratic fit_quadratic(const std::vector<Eigen::Vector3d>& pts, const Frame& f,
     pb += lin * d;
   }
   Eigen::Matrix<double, 6, 1> c;
-  if (pts.size() >= 6 && solve_normal<6>(ata, atb, c)) {
+  if (!plane_only && pts.size() >= 6 && solve_normal<6>(ata, atb, c)) {
     q = {c(0), c(1), c(2), c(3), c(4), c(5), 6};
     return q;
   }
@@ -78,6 +79,19 @@ Quadratic fit_quadratic(const std::vector<Eigen::Vector3d>& pts, const Frame& f,
     q.terms = 3;
   }
   return q;
+}
+
+// Is height d (scaled by 1/h, along n) within the platelet's heights
+// widened by their span on both sides?
+bool height_plausible(const std::vector<Eigen::Vector3d>& pts, const Frame& f, double h, double d) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& x : pts) {
+    const double dj = (x - f.c).dot(f.n) / h;
+    lo = std::min(lo, dj);
+    hi = std::max(hi, dj);
+  }
+  const double span = hi - lo;
+  return std::isfinite(d) && d >= lo - span && d <= hi + span;
 }
 
 // The point on the fitted graph X(u, v) = c + h (u b1 + v b2 + q(u, v) n)
@@ -103,9 +117,17 @@ Eigen::Vector2d keep_xy_parameter(const Quadratic& q, const Frame& f) {
 Replacement quadratic_point(const std::vector<Eigen::Vector3d>& pts, const Frame& f, double h, bool keep_xy) {
   Replacement r;
   r.ok = true;
-  const Quadratic q = fit_quadratic(pts, f, h);
+  Quadratic q = fit_quadratic(pts, f, h, false);
+  Eigen::Vector2d uv = keep_xy ? keep_xy_parameter(q, f) : Eigen::Vector2d(0, 0);
+  // NOTE: on irregular platelets of real contours the quadratic can
+  // extrapolate wildly at the origin (a point hundreds of edge lengths off
+  // was seen on headsq). A height outside the platelet's own range widened by
+  // its span is not believed: the plane of the points is used instead.
+  if (!height_plausible(pts, f, h, q.value(uv(0), uv(1)))) {
+    q = fit_quadratic(pts, f, h, true);
+    uv = keep_xy ? keep_xy_parameter(q, f) : Eigen::Vector2d(0, 0);
+  }
   r.fit_terms = q.terms;
-  const Eigen::Vector2d uv = keep_xy ? keep_xy_parameter(q, f) : Eigen::Vector2d(0, 0);
   const double u = uv(0), v = uv(1);
   r.point = f.c + h * (u * f.b1 + v * f.b2 + q.value(u, v) * f.n);
   // Theorem 5.5 (with READING-NOTES' 1 + c01^2) is the curvature of the graph
@@ -184,7 +206,7 @@ Replacement quadric_point(const std::vector<Eigen::Vector3d>& pts, const Frame& 
       t = std::abs(t1) < std::abs(t2) ? t1 : t2;
     }
   }
-  if (!std::isfinite(t) || std::abs(t) > 1.0) return quadratic_point(pts, f, h, keep_xy);
+  if (!std::isfinite(t) || std::abs(t) > 1.0 || !height_plausible(pts, f, h, t)) return quadratic_point(pts, f, h, keep_xy);
   Replacement r;
   r.ok = true;
   r.fit_terms = 10;

@@ -92,13 +92,17 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const LocalFaces& fac
   const int pv = p.a[0];
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
   double num = 0, den = 0, largest = 0;
+  assigned_.clear();
+  assigned_valid_ = true;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
       const Eigen::Vector3d& x = original_[size_t(v)];
       // The new face x lies on (graph: above; else: nearest) and x's
       // barycentric weight of p there.
       double best = -std::numeric_limits<double>::infinity(), weight = 0, residual = 0, slope = 0;
-      for (const auto& t : faces.tri) {
+      int chosen = 0;
+      for (size_t i = 0; i < faces.tri.size(); ++i) {
+        const auto& t = faces.tri[i];
         const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
         const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
         double score = 0, lp = 0, r = 0, s = 0;
@@ -128,11 +132,13 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const LocalFaces& fac
         }
         if (score > best) {
           best = score;
+          chosen = int(i);
           weight = lp;
           residual = r;
           slope = s;
         }
       }
+      assigned_.push_back(chosen);
       if (weight <= 0) continue;
       num += slope * residual;
       den += slope * slope;
@@ -154,14 +160,25 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
   pending_sum_ = sum_err2_;
   pending_max_ = max_distance_;
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
-  double near_original = std::numeric_limits<double>::infinity();
+  // The few original vertices nearest to the new point, whose triangles
+  // bound its distance to the original surface.
+  constexpr int kNear = 4;
+  int near_vertex[kNear] = {-1, -1, -1, -1};
+  double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
+  const bool reuse = assigned_valid_;
+  assigned_valid_ = false;
+  size_t index = 0;
   for (int f : p.faces)
-    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
+    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)], ++index) {
       const Eigen::Vector3d& x = original_[size_t(v)];
-      // Graph mode hands x to the new face above it, else to the nearest.
+      // Graph mode hands x to the new face above it, else to the nearest;
+      // after refine() the face it chose is kept (in graph mode p's (x, y)
+      // did not move, so it is the same face; else the distance to it is
+      // still an upper bound of the distance to the reduced surface).
       int best = 0;
       double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
-      for (size_t i = 0; i < faces.tri.size(); ++i) {
+      const size_t first = reuse ? size_t(assigned_[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
+      for (size_t i = first; i < last; ++i) {
         const auto& t = faces.tri[i];
         double score = 0, err2 = 0, d = 0;
         if (rms_ > 0) {
@@ -185,13 +202,13 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       if (distance_ > 0) {
         if (nearest > distance_) return false;
         pending_max_ = std::max(pending_max_, nearest);
-        // The new point against the original triangles around this vertex.
-        for (int k = face_start_[size_t(v)]; k < face_start_[size_t(v) + 1]; ++k) {
-          const auto& t = original_tri_[size_t(face_list_[size_t(k)])];
-          near_original = std::min(near_original, point_triangle_distance(point, original_[size_t(t[0])],
-                                                                          original_[size_t(t[1])],
-                                                                          original_[size_t(t[2])]));
-        }
+        double d2 = (x - point).squaredNorm();
+        int id = v;
+        for (int k = 0; k < kNear; ++k)
+          if (d2 < near_d2[k]) {
+            std::swap(d2, near_d2[k]);
+            std::swap(id, near_vertex[k]);
+          }
       }
       if (rms_ > 0) {
         pending_sum_ += best_err2 - err2_[size_t(v)];
@@ -200,6 +217,17 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       pending_vertex_.push_back(v);
       pending_face_.push_back(best);
     }
+  // The new point against the original triangles around those vertices (a
+  // subset of the original surface, so again an upper bound).
+  double near_original = std::numeric_limits<double>::infinity();
+  for (int v : near_vertex) {
+    if (v < 0) continue;
+    for (int k = face_start_[size_t(v)]; k < face_start_[size_t(v) + 1]; ++k) {
+      const auto& t = original_tri_[size_t(face_list_[size_t(k)])];
+      near_original = std::min(near_original, point_triangle_distance(point, original_[size_t(t[0])],
+                                                                      original_[size_t(t[1])], original_[size_t(t[2])]));
+    }
+  }
   if (distance_ > 0 && near_original < std::numeric_limits<double>::infinity()) {
     if (near_original > distance_) return false;
     pending_max_ = std::max(pending_max_, near_original);

@@ -56,6 +56,9 @@ class Tracker {
   std::vector<int> pending_vertex_, pending_face_;
   std::vector<double> pending_err2_;
   double pending_sum_ = 0, pending_max_ = 0;
+  // The faces refine() handed the vertices to, reused by the next check().
+  std::vector<int> assigned_;
+  bool assigned_valid_ = false;
 };
 
 double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
