@@ -21,7 +21,7 @@ level=${ISOFORM_STUDY_LEVEL:-6}
 mkdir -p "$work" "$here/images/compare"
 render_flag=${ISOFORM_STUDY_RENDER:---no-render}
 
-if "$iso" reduce --help >/dev/null 2>&1; then have_reduce=1; else have_reduce=0; fi
+if "$iso" reduce --help 2>/dev/null | grep -q -- "--keep"; then have_reduce=1; else have_reduce=0; fi
 
 # raw float volume -> VDB (level-set like: negative inside)
 make_volume() {  # kind n name
@@ -61,6 +61,8 @@ bases torus "$work/torus-full.ply" "$work/torus-c80.ply" "$work/torus-c95.ply"
 contour "$data/cube.vdb" 0 "$work/cube-full.ply"
 make_volume box 40 cube-c80; contour "$work/cube-c80.vdb" 0 "$work/cube-c80.ply" increasing
 make_volume box 20 cube-c95; contour "$work/cube-c95.vdb" 0 "$work/cube-c95.ply" increasing
+make_volume box 113 cube-box
+if [ "$have_reduce" = 1 ]; then cube_ref=$data/cube.vdb; else cube_ref=$work/cube-box.vdb; fi
 bases cube "$work/cube-full.ply" "$work/cube-c80.ply" "$work/cube-c95.ply"
 # the skull of headsq at 1150.5; without reduction the scan averaged over 2^3 and 4^3 blocks
 "$iso" convert "$data/headsq_64x64x93_u16le.raw" --dims 64,64,93 --type u16 --spacing 3.2,3.2,1.5 \
@@ -78,7 +80,7 @@ study() {  # case mesh reference-args...
 for f in 80 95; do
   study sphere-$f "$work/sphere-$f.ply" --reference sphere --centre 0,0,0 --radius 1
   study torus-$f "$work/torus-$f.ply" --reference torus --centre 0,0,0 --radius 1 --minor-radius 0.4
-  study cube-$f "$work/cube-$f.ply" --reference "$data/cube.vdb" --iso 0
+  study cube-$f "$work/cube-$f.ply" --reference "$cube_ref" --iso 0
   study skull-$f "$work/skull-$f.ply" --reference "$work/headsq.vdb" --iso 1150.5
 done
 
