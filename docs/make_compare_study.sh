@@ -19,7 +19,8 @@ iso=$build/cli/isoform
 py=/usr/bin/python3
 level=${ISOFORM_STUDY_LEVEL:-6}
 mkdir -p "$work" "$here/images/compare"
-render_flag=${ISOFORM_STUDY_RENDER:---no-render}
+# Blender renders only for the cases docs/compare.md shows (they take a while).
+shown="sphere-95 torus-95 cube-95 skull-80"
 
 if "$iso" reduce --help 2>/dev/null | grep -q -- "--keep"; then have_reduce=1; else have_reduce=0; fi
 
@@ -73,9 +74,10 @@ make_volume headsq 4 skull-c95; contour "$work/skull-c95.vdb" 1150.5 "$work/skul
 bases skull "$work/skull-full.ply" "$work/skull-c80.ply" "$work/skull-c95.ply"
 
 study() {  # case mesh reference-args...
-  local name=$1 mesh=$2
+  local name=$1 mesh=$2 render=--no-render
   shift 2
-  "$iso" compare "$mesh" "$@" --level "$level" $render_flag --quiet --json -o "$work/$name" >"$work/$name.json"
+  case " $shown " in *" $name "*) render= ;; esac
+  "$iso" compare "$mesh" "$@" --level "$level" $render --quiet --json -o "$work/$name" >"$work/$name.json"
 }
 for f in 80 95; do
   study sphere-$f "$work/sphere-$f.ply" --reference sphere --centre 0,0,0 --radius 1
@@ -85,11 +87,12 @@ for f in 80 95; do
 done
 
 "$py" "$here/compare_tables.py" "$work" "$have_reduce" >"$work/tables.md"
-for c in sphere-95 torus-95 cube-95 skull-80; do
+for c in $shown; do
   for p in curvature-histograms deviation; do
     [ -f "$work/$c/$p.png" ] && cp "$work/$c/$p.png" "$here/images/compare/$c-$p.png"
   done
   for r in "$work/$c"/render-*.png; do
+    case "$c:$r" in cube*isophotes* | skull*isophotes*) continue ;; esac
     [ -f "$r" ] && cp "$r" "$here/images/compare/$c-$(basename "$r")"
   done
 done
