@@ -1,5 +1,6 @@
 // `isoform compare MESH [--reference in.vdb --iso V | --reference sphere|torus] -o study/`:
-// the flat triangles and the Loop limit surface of the same triangulation,
+// the flat triangles, the Loop limit surface and the side-vertex surface
+// (Chapter 6) of the same triangulation,
 // measured at the same samples (issue 5), written as report.json,
 // samples.csv, report.md, one PLY tessellation per surface, and pictures:
 // matplotlib plots and Blender renders with isophote stripes.
@@ -27,7 +28,7 @@ struct CompareArgs {
   double radius = 0.0, minor_radius = 0.0;
   int level = 8, isolation = 6;
   long long table_triangles = 2000;
-  bool smooth_corners = false, no_render = false, no_plots = false, json = false;
+  bool smooth_corners = false, no_render = false, no_plots = false, no_side_vertex = false, json = false;
   ProgressOptions progress;
 };
 
@@ -44,6 +45,7 @@ isoform_compare_options options_of(const CompareArgs& a) {
   o.loop_sharp_corners = a.smooth_corners ? 0 : 1;
   o.table_triangles = a.table_triangles;
   o.input_name = a.input.c_str();
+  o.side_vertex = a.no_side_vertex ? 0 : 1;
   if (a.reference == "sphere") o.reference = ISOFORM_REFERENCE_SPHERE;
   if (a.reference == "torus") o.reference = ISOFORM_REFERENCE_TORUS;
   const bool given = !a.centre.empty() || a.radius > 0.0;
@@ -132,6 +134,9 @@ void run_compare(const CompareArgs& a) {
                                  {"seconds_per_million", m.seconds_per_million},
                                  {"tessellation_triangles", m.tessellation_triangles}};
   }
+  const std::string notes = isoform_compare_report_notes(report.get());
+  summary["notes"] = notes;
+  if (!notes.empty() && !a.progress.quiet) std::cerr << "isoform: note: " << notes;
   make_pictures(a, summary);
   if (a.json) {
     print_json(summary);
@@ -153,7 +158,7 @@ void run_compare(const CompareArgs& a) {
 Command add_compare_command(CLI::App& parent) {
   auto a = std::make_shared<CompareArgs>();
   CLI::App* app = parent.add_subcommand(
-      "compare", "Measure the Loop limit surface and the flat triangles of a mesh side by side");
+      "compare", "Measure the side-vertex surface, the Loop limit surface and the flat triangles of a mesh side by side");
   app->footer(
       "Samples every surface at the same barycentric lattice of each base triangle and writes "
       "report.json, samples.csv, report.md, surface-<name>.ply (each surface tessellated at the "
@@ -178,6 +183,7 @@ Command add_compare_command(CLI::App& parent) {
   app->add_flag("--smooth-corners", a->smooth_corners, "Loop: smooth valence-2 boundary corners");
   app->add_option("--csv-triangles", a->table_triangles, "Base triangles in samples.csv (default 2000)")
       ->check(CLI::NonNegativeNumber);
+  app->add_flag("--no-side-vertex", a->no_side_vertex, "Leave out the side-vertex surface");
   app->add_flag("--no-render", a->no_render, "Skip the Blender renders");
   app->add_flag("--no-plots", a->no_plots, "Skip the matplotlib plots");
   add_progress_flags(*app, a->progress);

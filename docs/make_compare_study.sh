@@ -19,9 +19,10 @@ iso=$build/cli/isoform
 py=/usr/bin/python3
 level=${ISOFORM_STUDY_LEVEL:-6}
 mkdir -p "$work" "$here/images/compare"
-render_flag=${ISOFORM_STUDY_RENDER:---no-render}
+# Blender renders only for the cases docs/compare.md shows (they take a while).
+shown="sphere-95 torus-95 cube-95 skull-80"
 
-if "$iso" reduce --help >/dev/null 2>&1; then have_reduce=1; else have_reduce=0; fi
+if "$iso" reduce --help 2>/dev/null | grep -q -- "--keep"; then have_reduce=1; else have_reduce=0; fi
 
 # raw float volume -> VDB (level-set like: negative inside)
 make_volume() {  # kind n name
@@ -39,8 +40,8 @@ contour() {  # volume iso out [orientation]
 # base meshes: name-full.ply, then name-80.ply and name-95.ply (80% and 95% removed)
 bases() {  # name full.ply coarse80.ply coarse95.ply
   if [ "$have_reduce" = 1 ]; then
-    "$iso" reduce "$2" --keep 0.2 -o "$work/$1-80.ply" --quiet >/dev/null
-    "$iso" reduce "$2" --keep 0.05 -o "$work/$1-95.ply" --quiet >/dev/null
+    "$iso" reduce "$2" --keep 0.2 -o "$work/$1-80.ply" >/dev/null
+    "$iso" reduce "$2" --keep 0.05 -o "$work/$1-95.ply" >/dev/null
   else
     cp "$3" "$work/$1-80.ply"
     cp "$4" "$work/$1-95.ply"
@@ -61,6 +62,8 @@ bases torus "$work/torus-full.ply" "$work/torus-c80.ply" "$work/torus-c95.ply"
 contour "$data/cube.vdb" 0 "$work/cube-full.ply"
 make_volume box 40 cube-c80; contour "$work/cube-c80.vdb" 0 "$work/cube-c80.ply" increasing
 make_volume box 20 cube-c95; contour "$work/cube-c95.vdb" 0 "$work/cube-c95.ply" increasing
+make_volume box 113 cube-box
+if [ "$have_reduce" = 1 ]; then cube_ref=$data/cube.vdb; else cube_ref=$work/cube-box.vdb; fi
 bases cube "$work/cube-full.ply" "$work/cube-c80.ply" "$work/cube-c95.ply"
 # the skull of headsq at 1150.5; without reduction the scan averaged over 2^3 and 4^3 blocks
 "$iso" convert "$data/headsq_64x64x93_u16le.raw" --dims 64,64,93 --type u16 --spacing 3.2,3.2,1.5 \
@@ -71,23 +74,25 @@ make_volume headsq 4 skull-c95; contour "$work/skull-c95.vdb" 1150.5 "$work/skul
 bases skull "$work/skull-full.ply" "$work/skull-c80.ply" "$work/skull-c95.ply"
 
 study() {  # case mesh reference-args...
-  local name=$1 mesh=$2
+  local name=$1 mesh=$2 render=--no-render
   shift 2
-  "$iso" compare "$mesh" "$@" --level "$level" $render_flag --quiet --json -o "$work/$name" >"$work/$name.json"
+  case " $shown " in *" $name "*) render= ;; esac
+  "$iso" compare "$mesh" "$@" --level "$level" $render --quiet --json -o "$work/$name" >"$work/$name.json"
 }
 for f in 80 95; do
   study sphere-$f "$work/sphere-$f.ply" --reference sphere --centre 0,0,0 --radius 1
   study torus-$f "$work/torus-$f.ply" --reference torus --centre 0,0,0 --radius 1 --minor-radius 0.4
-  study cube-$f "$work/cube-$f.ply" --reference "$data/cube.vdb" --iso 0
+  study cube-$f "$work/cube-$f.ply" --reference "$cube_ref" --iso 0
   study skull-$f "$work/skull-$f.ply" --reference "$work/headsq.vdb" --iso 1150.5
 done
 
 "$py" "$here/compare_tables.py" "$work" "$have_reduce" >"$work/tables.md"
-for c in sphere-95 torus-95 cube-95 skull-80; do
+for c in $shown; do
   for p in curvature-histograms deviation; do
     [ -f "$work/$c/$p.png" ] && cp "$work/$c/$p.png" "$here/images/compare/$c-$p.png"
   done
   for r in "$work/$c"/render-*.png; do
+    case "$c:$r" in cube*isophotes* | skull*isophotes*) continue ;; esac
     [ -f "$r" ] && cp "$r" "$here/images/compare/$c-$(basename "$r")"
   done
 done

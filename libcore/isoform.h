@@ -612,9 +612,10 @@ ISOFORM_API const char* isoform_graph_fit_name(int fit);
 
 /* isoform_compare samples several smooth surfaces over the same base
  * triangles at the same barycentric points (weight 1-u-v, u, v on the
- * triangle's vertices t0, t1, t2): "linear" (the flat triangles) and "loop"
+ * triangle's vertices t0, t1, t2): "linear" (the flat triangles), "loop"
  * (the Loop limit surface, evaluated with OpenSubdiv: adaptive refinement,
- * Gregory end caps, double precision). Measures: deviation from a reference,
+ * Gregory end caps, double precision) and "side-vertex" (Chapter 6, from the
+ * mesh's points and normals, default patch options). Measures: deviation from a reference,
  * error at the data points (the base vertices), normal gap and
  * mean-curvature jump across edges, curvature spread, time per million
  * samples, and the triangles of each surface's tessellation. */
@@ -649,6 +650,9 @@ typedef struct isoform_compare_options {
   long long table_triangles; /* base triangles whose samples go into samples.csv, evenly
                             spaced; default 2000; 0 = none */
   const char* input_name;/* names the base mesh in the report's texts (copied); default NULL */
+  int side_vertex;       /* 1 (default): also the side-vertex surface; when the mesh cannot
+                            carry it (zero normals, degenerate triangles) it is left out and
+                            the report's notes say why; 0: linear and loop only */
 } isoform_compare_options;
 
 ISOFORM_API void isoform_compare_options_default(isoform_compare_options* options);
@@ -693,7 +697,8 @@ ISOFORM_API isoform_status isoform_compare(const isoform_mesh* mesh, const isofo
                                            const isoform_compare_options* options,
                                            isoform_progress* progress, isoform_compare_report** out);
 
-/* Number of surfaces measured (2: "linear", "loop"), or 0 for NULL. */
+/* Number of surfaces measured ("linear", "loop", then "side-vertex" when
+ * built), or 0 for NULL. */
 ISOFORM_API int isoform_compare_report_surface_count(const isoform_compare_report* report);
 /* The name of surface index, valid as long as the report; NULL when index is out of range. */
 ISOFORM_API const char* isoform_compare_report_surface_name(const isoform_compare_report* report, int index);
@@ -704,6 +709,9 @@ ISOFORM_API isoform_status isoform_compare_report_metrics(const isoform_compare_
  * ("world units" or "voxels"; "" without one); valid as long as the report. */
 ISOFORM_API const char* isoform_compare_report_reference(const isoform_compare_report* report);
 ISOFORM_API const char* isoform_compare_report_deviation_unit(const isoform_compare_report* report);
+/* What the comparison had to leave out, one sentence per line ("" if
+ * nothing); valid as long as the report. */
+ISOFORM_API const char* isoform_compare_report_notes(const isoform_compare_report* report);
 
 /* A new mesh: the tessellation of surface index at the report's level
  * (lattice points as vertices, shared along base edges, the surface's unit

@@ -55,13 +55,15 @@ def save(fig, study, name):
 def curvature_histograms(report, columns, study):
     fig, ax = plt.subplots(figsize=(7, 4.2))
     drawn = 0
-    for s in report["surfaces"]:
-        h = finite(columns.get(s["name"] + "_mean", []))
-        if not h or all(v == 0 for v in h):
-            continue
-        lo, hi = s["mean_curvature"]["p05"], s["mean_curvature"]["p95"]
-        span = (hi - lo) or 1.0
-        ax.hist(h, bins=80, range=(lo - 0.5 * span, hi + 0.5 * span), histtype="step", linewidth=1.5,
+    shown = [s for s in report["surfaces"]
+             if any(v != 0 for v in finite(columns.get(s["name"] + "_mean", [])))]
+    # One range and one set of bins for every surface, so bar heights compare.
+    lo = min((s["mean_curvature"]["p05"] for s in shown), default=-1.0)
+    hi = max((s["mean_curvature"]["p95"] for s in shown), default=1.0)
+    span = (hi - lo) or 1.0
+    for s in shown:
+        h = finite(columns[s["name"] + "_mean"])
+        ax.hist(h, bins=120, range=(lo - 0.25 * span, hi + 0.25 * span), histtype="step", linewidth=1.5,
                 label=f"{s['name']} (std {s['mean_curvature']['stddev']:.3g})")
         drawn += 1
     ref = report["reference"]

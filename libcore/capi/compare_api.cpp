@@ -7,6 +7,7 @@
 #include "../compare/loop_surface.h"
 #include "../compare/report_files.h"
 #include "../errors.h"
+#include "../patch/side_vertex_surface.h"
 #include "../progress.h"
 #include "../topology.h"
 #include "handles.h"
@@ -18,6 +19,7 @@ namespace cmp = isoform::compare;
 struct isoform_compare_report {
   cmp::CompareResult result;
   cmp::StudyInfo info;
+  std::string notes_text;  // the notes, one per line, made once
 };
 
 namespace {
@@ -89,6 +91,7 @@ void isoform_compare_options_default(isoform_compare_options* o) {
   o->loop_isolation = 6;
   o->loop_sharp_corners = 1;
   o->table_triangles = 2000;
+  o->side_vertex = 1;
 }
 
 isoform_status isoform_compare(const isoform_mesh* mesh, const isoform_volume* volume,
@@ -124,8 +127,17 @@ isoform_status isoform_compare(const isoform_mesh* mesh, const isoform_volume* v
     auto report = std::make_unique<isoform_compare_report>();
     report->info.input = o.input_name ? o.input_name : "";
     report->info.loop_options = loop_text(loop_options);
-    report->result = cmp::compare_surfaces(*m, {{"linear", linear.get()}, {"loop", loop.get()}}, reference.get(),
-                                           settings, p);
+    std::vector<cmp::NamedSurface> surfaces = {{"linear", linear.get()}, {"loop", loop.get()}};
+    std::unique_ptr<isoform::TriangleSurface> side_vertex;
+    std::string note;
+    if (o.side_vertex) {
+      side_vertex = isoform::patch::make_side_vertex_surface(*m, isoform::patch::PatchOptions{}, error);
+      if (side_vertex) surfaces.push_back({"side-vertex", side_vertex.get()});
+      else note = "side-vertex surface left out: " + error;
+    }
+    report->result = cmp::compare_surfaces(*m, surfaces, reference.get(), settings, p);
+    if (!note.empty()) report->result.notes.push_back(note);
+    for (const std::string& n : report->result.notes) report->notes_text += n + "\n";
     p.stage(ISOFORM_STAGE_DONE);
     *out = report.release();
     return ISOFORM_OK;
@@ -171,6 +183,10 @@ const char* isoform_compare_report_reference(const isoform_compare_report* r) {
 
 const char* isoform_compare_report_deviation_unit(const isoform_compare_report* r) {
   return r ? r->result.deviation_unit.c_str() : "";
+}
+
+const char* isoform_compare_report_notes(const isoform_compare_report* r) {
+  return r ? r->notes_text.c_str() : "";
 }
 
 isoform_status isoform_compare_report_tessellation(const isoform_compare_report* r, int index, isoform_mesh** out) {

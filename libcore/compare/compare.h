@@ -49,6 +49,7 @@ struct CompareResult {
   std::vector<Mesh> tessellations;               // one per surface, same order
   std::vector<SampleRow> rows;                   // the sample table's samples
   std::vector<std::vector<SampleValues>> values; // [surface][row]
+  std::vector<std::string> notes;                // what was left out, and why
 };
 
 // Measures every surface over base (which needs its neighbour table;

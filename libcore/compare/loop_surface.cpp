@@ -115,7 +115,14 @@ class LoopSurface : public TriangleSurface {
     if (table_->GetPatchParam(*handle).IsTriangleRotated())
       for (std::array<double, 3>* d : {&out.duu, &out.duv, &out.dvv})
         for (double& c : *d) c = -c;
-    out.has_second = true;
+    // NOTE: OpenSubdiv 3.5 differentiates its Gregory triangles (the end
+    // caps around irregular vertices) approximately: the rational interior
+    // points are held fixed. First derivatives are still exact at the patch
+    // corners (the base vertices), where those points have no weight, and
+    // off by a few percent inside (test DerivativesInGregoryEndCaps); second
+    // derivatives are not the surface's anywhere there, so they are not
+    // offered. At isolation L the end caps reach 2^-L of an edge from a vertex.
+    out.has_second = table_->GetPatchDescriptor(*handle).GetType() != Far::PatchDescriptor::GREGORY_TRIANGLE;
     return unit_normal(out);
   }
 

@@ -6,7 +6,10 @@
 // than 6, boundaries) up to `isolation` levels; regular regions become quartic
 // box-spline patches, the rest Gregory triangle end caps. Every base triangle
 // is one parametric face of OpenSubdiv, whose corners (0,0), (1,0), (0,1) are
-// its vertices t0, t1, t2: the (u, v) of surface.h.
+// its vertices t0, t1, t2: the (u, v) of surface.h. In the Gregory end caps
+// OpenSubdiv's derivatives are approximate (exact first derivatives only at
+// the base vertices), so samples there come without second derivatives
+// (has_second false).
 #pragma once
 
 #include <memory>

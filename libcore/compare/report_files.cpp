@@ -82,6 +82,7 @@ std::string report_json(const CompareResult& r, const StudyInfo& info) {
   Json surfaces = Json::array();
   for (const SurfaceMetrics& m : r.surfaces) surfaces.push_back(surface_json(m));
   j["surfaces"] = surfaces;
+  j["notes"] = r.notes;
   return j.dump(2) + "\n";
 }
 
@@ -136,6 +137,7 @@ std::string report_markdown(const CompareResult& r, const StudyInfo& info) {
   row(out, "seconds per million samples", r, [](const SurfaceMetrics& m) { return g(m.seconds_per_million, 3); });
   row(out, "tessellation triangles", r, [](const SurfaceMetrics& m) { return std::to_string(m.tessellation_triangles); });
   row(out, "samples not evaluated", r, [](const SurfaceMetrics& m) { return std::to_string(m.failed_samples); });
+  for (const std::string& n : r.notes) out << "\nNote: " << n << ".\n";
   out << "\nH is the mean curvature (positive where the surface bends away from its normal), in 1/world unit.\n";
   return out.str();
 }

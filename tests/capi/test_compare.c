@@ -43,10 +43,12 @@ static void test_octahedron(void) {
   o.fit_reference = 0; /* the unit sphere about the origin */
   CHECK(isoform_compare(m, NULL, &o, &progress, &r) == ISOFORM_OK);
   CHECK(progress.stage == ISOFORM_STAGE_DONE);
-  CHECK(isoform_compare_report_surface_count(r) == 2);
+  CHECK(isoform_compare_report_surface_count(r) == 3);
   CHECK(strcmp(isoform_compare_report_surface_name(r, 0), "linear") == 0);
   CHECK(strcmp(isoform_compare_report_surface_name(r, 1), "loop") == 0);
-  CHECK(isoform_compare_report_surface_name(r, 2) == NULL);
+  CHECK(strcmp(isoform_compare_report_surface_name(r, 2), "side-vertex") == 0);
+  CHECK(isoform_compare_report_surface_name(r, 3) == NULL);
+  CHECK(strcmp(isoform_compare_report_notes(r), "") == 0);
   CHECK(strcmp(isoform_compare_report_deviation_unit(r), "world units") == 0);
   CHECK(strstr(isoform_compare_report_reference(r), "radius 1") != NULL);
   CHECK(isoform_compare_report_metrics(r, 0, &flat) == ISOFORM_OK);
@@ -65,7 +67,16 @@ static void test_octahedron(void) {
   CHECK(loop.normal_gap.max < 1e-9);
   CHECK(loop.mean_curvature.p50 > 0.5);
   CHECK(loop.tessellation_triangles == 72);
-  CHECK(isoform_compare_report_metrics(r, 5, &flat) == ISOFORM_ERR_INVALID_ARGUMENT);
+  /* The side-vertex surface passes through the vertices and is tangent-plane
+   * continuous across the edges. */
+  {
+    isoform_compare_metrics sv;
+    CHECK(isoform_compare_report_metrics(r, 2, &sv) == ISOFORM_OK);
+    CHECK(sv.data_point_error.max < 1e-12);
+    CHECK(sv.normal_gap.max < 1e-6);
+    CHECK(sv.deviation.max < flat.deviation.max);
+  }
+  CHECK(isoform_compare_report_metrics(r, 5, &loop) == ISOFORM_ERR_INVALID_ARGUMENT);
   CHECK(isoform_compare_report_tessellation(r, 1, &tess) == ISOFORM_OK);
   CHECK(isoform_mesh_triangle_count(tess) == 72);
   CHECK(isoform_mesh_vertex_count(tess) == 6 + 12 * 2 + 8);

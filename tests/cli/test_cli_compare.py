@@ -16,7 +16,8 @@ import sys
 import test_cli as base
 from test_cli import expect, run, run_json, data, leftovers, expect_failure
 
-STUDY_FILES = ["report.json", "samples.csv", "report.md", "surface-linear.ply", "surface-loop.ply"]
+STUDY_FILES = ["report.json", "samples.csv", "report.md", "surface-linear.ply", "surface-loop.ply",
+               "surface-side-vertex.ply"]
 
 
 def icosphere(path, levels, radius=2.0, centre=(0.5, -0.25, 1.0)):
@@ -91,13 +92,16 @@ def case_sphere_reference(tmp):
     expect(loop["normal_gap_radians"]["max"] < 1e-6, f"Loop normal gap {loop['normal_gap_radians']}")
     expect(flat["normal_gap_radians"]["max"] > 0.05, f"flat normal gap {flat['normal_gap_radians']}")
     expect(loop["position_gap"]["max"] < 1e-9, f"Loop position gap {loop['position_gap']}")
+    sv = surface(report, "side-vertex")
+    expect(sv["data_point_error"]["max"] < 1e-6, f"side-vertex data-point error {sv['data_point_error']}")
+    expect(sv["normal_gap_radians"]["max"] < 1e-6, f"side-vertex normal gap {sv['normal_gap_radians']}")
     h = loop["mean_curvature"]["p50"]
     expect(abs(h * 2.0 - 1) < 0.05, f"Loop median H {h}, sphere 1/r = 0.5")
     expect(flat["tessellation_triangles"] == loop["tessellation_triangles"] == 320 * 16, f"{flat['tessellation_triangles']}")
     expect(len(rows) == 320 * 15, f"samples.csv has {len(rows)} rows")
     expect(set(rows[0]) >= {"triangle", "u", "v", "loop_x", "loop_deviation", "loop_mean", "linear_gauss"},
            f"samples.csv columns {list(rows[0])}")
-    expect("| measure | linear | loop |" in md and "normal gap" in md, f"report.md:\n{md[:600]}")
+    expect("| measure | linear | loop | side-vertex |" in md and "normal gap" in md, f"report.md:\n{md[:600]}")
     points, normals, faces, _ = base.read_ply(os.path.join(out, "surface-loop.ply"))
     expect(len(faces) == 320 * 16, f"surface-loop.ply has {len(faces)} triangles")
     expect(all(math.isfinite(c) for p in points for c in p), "NaN in surface-loop.ply")
@@ -177,7 +181,7 @@ def case_render_small(tmp):
     out = os.path.join(tmp, "study")
     summary, _ = run_json("compare", mesh, "--reference", "sphere", "--level", "3", "--no-plots", "--quiet", "-o", out)
     expect(summary["pictures"]["renders"] == "made", f"{summary['pictures']}")
-    for name in ("linear", "loop"):
+    for name in ("linear", "loop", "side-vertex"):
         for kind in ("isophotes", "reflection"):
             png = os.path.join(out, f"render-{name}-{kind}.png")
             with open(png, "rb") as f:

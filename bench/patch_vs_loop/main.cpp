@@ -1,0 +1,130 @@
+// bench/patch-vs-loop: points per second of the side-vertex surface
+// (Chapter 6, libcore/patch) against OpenSubdiv's Loop limit surface
+// (libcore/compare), on the same mesh and the same samples, in one run.
+//
+// usage: isoform_patch_vs_loop_bench MESH.ply [--level K] [--reps N] [--json FILE]
+//
+// Every base triangle is sampled at the lattice (i/k, j/k), i + j <= k;
+// each evaluation returns the point, the unit normal and first and second
+// derivatives (SurfaceSample), single-threaded. Repetitions alternate the
+// surfaces (A B A B ...) so that load on the shared machine hits both alike;
+// the best and the median of each are reported, and their ratio. Building
+// each surface (OpenSubdiv's adaptive refinement and patch table; the
+// side-vertex surface's edge curves) is timed apart.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "libcore/compare/lattice.h"
+#include "libcore/compare/loop_surface.h"
+#include "libcore/meshio/meshio.h"
+#include "libcore/mesh_normals.h"
+#include "libcore/patch/side_vertex_surface.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One pass over every lattice sample; returns its seconds. The checksum
+// keeps the compiler from dropping the evaluations.
+double sample_pass(const isoform::TriangleSurface& s, const std::vector<isoform::compare::LatticePoint>& lattice,
+                   double& checksum, long long& failed) {
+  isoform::SurfaceSample x;
+  const auto start = Clock::now();
+  for (size_t t = 0; t < s.triangle_count(); ++t)
+    for (const auto& p : lattice) {
+      if (s.evaluate(t, p.u, p.v, x)) checksum += x.point[0] + x.normal[2] + x.duu[1];
+      else ++failed;
+    }
+  return seconds_since(start);
+}
+
+struct Run {
+  std::string name;
+  double build_seconds = 0.0;
+  std::vector<double> seconds;
+  long long failed = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Side-vertex surface against OpenSubdiv Loop: points per second, same mesh and samples"};
+  std::string input, json_path;
+  int level = 8, reps = 5;
+  app.add_option("mesh", input, "Base mesh (.ply with normals, .obj, .stl)")->required();
+  app.add_option("--level", level, "Lattice level k: (k+1)(k+2)/2 samples per triangle")->check(CLI::Range(1, 64));
+  app.add_option("--reps", reps, "Timed passes per surface")->check(CLI::Range(1, 100));
+  app.add_option("--json", json_path, "Also write the figures as JSON here");
+  CLI11_PARSE(app, argc, argv);
+
+  isoform::Mesh mesh = isoform::load_mesh(input);
+  if (mesh.normals.size() != mesh.points.size()) isoform::estimate_normals(mesh);
+  std::string error;
+  std::vector<Run> runs(3);
+  std::vector<std::unique_ptr<isoform::TriangleSurface>> surfaces(3);
+  const std::function<std::unique_ptr<isoform::TriangleSurface>()> makers[3] = {
+      [&] { return isoform::patch::make_side_vertex_surface(mesh, {}, error); },
+      [&] {
+        isoform::patch::PatchOptions o;
+        o.second_derivatives = false;
+        return isoform::patch::make_side_vertex_surface(mesh, o, error);
+      },
+      [&] { return isoform::compare::make_loop_surface(mesh, {}, error); }};
+  const char* names[3] = {"side-vertex", "side-vertex, no second derivatives", "loop (OpenSubdiv)"};
+  for (int i = 0; i < 3; ++i) {
+    runs[size_t(i)].name = names[i];
+    const auto start = Clock::now();
+    surfaces[size_t(i)] = makers[i]();
+    runs[size_t(i)].build_seconds = seconds_since(start);
+    if (!surfaces[size_t(i)]) {
+      std::cerr << input << ": " << names[i] << ": " << error << '\n';
+      return 1;
+    }
+  }
+  const auto lattice = isoform::compare::lattice(level);
+  const long long samples = (long long)mesh.triangle_count() * (long long)lattice.size();
+  double checksum = 0.0;
+  for (int r = 0; r < reps; ++r)
+    for (size_t i = 0; i < 3; ++i) {
+      long long failed = 0;
+      runs[i].seconds.push_back(sample_pass(*surfaces[i], lattice, checksum, failed));
+      runs[i].failed = failed;
+    }
+
+  nlohmann::ordered_json j = {{"mesh", input}, {"triangles", mesh.triangle_count()}, {"level", level},
+                              {"samples", samples}, {"reps", reps}, {"checksum", checksum}};
+  std::printf("%s: %zu triangles, level %d, %lld samples per pass, %d passes each (interleaved)\n",
+              input.c_str(), mesh.triangle_count(), level, samples, reps);
+  std::printf("%-36s %10s %14s %14s %8s\n", "surface", "build s", "best Mpts/s", "median Mpts/s", "failed");
+  for (const Run& r : runs) {
+    const double best = *std::min_element(r.seconds.begin(), r.seconds.end()), med = median(r.seconds);
+    std::printf("%-36s %10.3f %14.3f %14.3f %8lld\n", r.name.c_str(), r.build_seconds, samples / best / 1e6,
+                samples / med / 1e6, r.failed);
+    j["surfaces"].push_back({{"name", r.name}, {"build_seconds", r.build_seconds}, {"pass_seconds", r.seconds},
+                             {"best_points_per_second", samples / best}, {"median_points_per_second", samples / med},
+                             {"failed", r.failed}});
+  }
+  const double ratio = median(runs[2].seconds) / median(runs[0].seconds);
+  std::printf("side-vertex / Loop points per second (medians): %.2f (target >= 1)\n", ratio);
+  j["side_vertex_over_loop"] = ratio;
+  if (!json_path.empty()) std::ofstream(json_path) << j.dump(2) << '\n';
+  return 0;
+}
