@@ -96,6 +96,7 @@ std::string verdicts(const std::vector<irb::Input>& inputs, const std::vector<st
                               {"time_over_meshopt", time_ratio}, {"cpu_over_meshopt", cpu_ratio},
                               {"error_met", error_ok}, {"time_met", time_ok}, {"cpu_met", cpu_ok}});
     }
+  if (out.empty()) text += "| (isoform_reduce did not run: no verdict) | | | | | | | | |\n";
   return text;
 }
 
