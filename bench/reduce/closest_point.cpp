@@ -91,6 +91,7 @@ TriangleTree::TriangleTree(const MeshView& mesh) {
   std::vector<double> sorted(9 * m);
   for (size_t s = 0; s < m; ++s) std::copy_n(&corners_[9 * size_t(order[s])], 9, &sorted[9 * s]);
   corners_.swap(sorted);
+  input_index_ = order;
 }
 
 uint32_t TriangleTree::build(std::vector<uint32_t>& order, const std::vector<double>& centroids, uint32_t begin,
@@ -134,8 +135,10 @@ uint32_t TriangleTree::build(std::vector<uint32_t>& order, const std::vector<dou
   return at;
 }
 
-double TriangleTree::distance2(const Vec3& p) const {
+double TriangleTree::distance2(const Vec3& p, int32_t* nearest) const {
   double best = std::numeric_limits<double>::infinity();
+  uint32_t best_at = 0;
+  if (nearest) *nearest = -1;
   if (nodes_.empty()) return best;
   uint32_t stack[128];
   int top = 0;
@@ -146,7 +149,8 @@ double TriangleTree::distance2(const Vec3& p) const {
     if (node.count > 0) {
       for (uint32_t s = node.first; s < node.first + node.count; ++s) {
         const double* c = &corners_[9 * size_t(s)];
-        best = std::min(best, point_triangle_distance2(p, corner(c, 0), corner(c, 1), corner(c, 2)));
+        const double d2 = point_triangle_distance2(p, corner(c, 0), corner(c, 1), corner(c, 2));
+        if (d2 < best) best = d2, best_at = s;
       }
       continue;
     }
@@ -162,6 +166,7 @@ double TriangleTree::distance2(const Vec3& p) const {
       if (dr < best) stack[top++] = right;
     }
   }
+  if (nearest && best < std::numeric_limits<double>::infinity()) *nearest = int32_t(input_index_[best_at]);
   return best;
 }
 

@@ -32,8 +32,9 @@ class TriangleTree {
   // mesh gives a tree whose every distance is infinite.
   explicit TriangleTree(const MeshView& mesh);
 
-  // Squared distance from p to the nearest point of the mesh.
-  double distance2(const Vec3& p) const;
+  // Squared distance from p to the nearest point of the mesh; with nearest,
+  // also the input index of a triangle at that distance (-1 if none).
+  double distance2(const Vec3& p, int32_t* nearest = nullptr) const;
 
   size_t triangle_count() const { return corners_.size() / 9; }
 
@@ -48,6 +49,7 @@ class TriangleTree {
 
   std::vector<Node> nodes_;
   std::vector<double> corners_;  // 9 per triangle, in leaf order
+  std::vector<uint32_t> input_index_;  // of each triangle in leaf order
 };
 
 }  // namespace isoform_reduce_bench

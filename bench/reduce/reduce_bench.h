@@ -102,7 +102,12 @@ Run run_meshopt(const Input& in, double percent, const Options& o);
 // The errors and topology of a run's result against its input.
 struct Measured {
   TwoSidedError error;
-  double vertical_max = -1, vertical_rms = -1;  // graphs only
+  double vertical_max = -1, vertical_rms = -1;  // graphs only: at the result's samples
+  // Graphs only: the result's height over each original knot against f
+  // there (the seed's 5.41), and the knots no result triangle covers.
+  double knot_max = -1, knot_rms = -1;
+  size_t knots_uncovered = 0;
+  size_t folded = 0;  // graphs only: triangles whose (x, y) projection is clockwise or flat
   isoform_mesh_stats stats{};                   // of the result, by isoform_mesh_from_arrays_f64
 };
 Measured measure(const Input& in, const Run& run, const Options& o);

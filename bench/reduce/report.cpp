@@ -31,10 +31,10 @@ std::string markdown_table(const Input& in, const std::vector<Row>& rows) {
   const bool graph = in.height != nullptr;
   t += "| removed | method | triangles | time s | CPU s | time / meshopt | CPU / meshopt | max | RMS | max / diag | RMS / diag |"
        " max / OpenMesh | RMS / OpenMesh |";
-  if (graph) t += " vertical max | vertical RMS |";
+  if (graph) t += " vertical max | vertical RMS | knot max | knot RMS | knots uncovered | folded triangles |";
   t += " boundary edges | non-manifold edges | Euler | parts |\n";
   t += "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
-  if (graph) t += "---:|---:|";
+  if (graph) t += "---:|---:|---:|---:|---:|---:|";
   t += "---:|---:|---:|---:|\n";
   for (const Row& r : rows) {
     t += "| " + fmt("%g%%", r.run.percent) + " | " + r.run.method + " | ";
@@ -50,7 +50,10 @@ std::string markdown_table(const Input& in, const std::vector<Row>& rows) {
          " | " + ratio(r.run.time.cpu, mo ? mo->run.time.cpu : 0) + " | " + fmt("%.3g", max) + " | " + fmt("%.3g", rms) + " | " + fmt("%.3g", max / in.diagonal) + " | " +
          fmt("%.3g", rms / in.diagonal) + " | " + ratio(max, om ? om->m.error.max() : 0) + " | " +
          ratio(rms, om ? om->m.error.rms() : 0) + " |";
-    if (graph) t += " " + fmt("%.3g", r.m.vertical_max) + " | " + fmt("%.3g", r.m.vertical_rms) + " |";
+    if (graph)
+      t += " " + fmt("%.3g", r.m.vertical_max) + " | " + fmt("%.3g", r.m.vertical_rms) + " | " +
+           fmt("%.3g", r.m.knot_max) + " | " + fmt("%.3g", r.m.knot_rms) + " | " + std::to_string(r.m.knots_uncovered) +
+           " | " + std::to_string(r.m.folded) + " |";
     t += " " + std::to_string(r.m.stats.boundary_edges) + " | " + std::to_string(r.m.stats.nonmanifold_edges) +
          " | " + std::to_string(r.m.stats.euler_characteristic) + " | " + std::to_string(r.m.stats.parts) + " |\n";
   }
@@ -77,7 +80,11 @@ Json input_json(const Input& in, const std::vector<Row>& rows) {
     j["result_to_original"] = side(r.m.error.b_to_a);
     j["max"] = r.m.error.max();
     j["rms"] = r.m.error.rms();
-    if (in.height) j["vertical"] = Json{{"max", r.m.vertical_max}, {"rms", r.m.vertical_rms}};
+    if (in.height) {
+      j["vertical"] = Json{{"max", r.m.vertical_max}, {"rms", r.m.vertical_rms}};
+      j["knots"] = Json{{"max", r.m.knot_max}, {"rms", r.m.knot_rms}, {"uncovered", r.m.knots_uncovered},
+                         {"folded_triangles", r.m.folded}};
+    }
     j["stats"] = Json{{"boundary_edges", r.m.stats.boundary_edges}, {"nonmanifold_edges", r.m.stats.nonmanifold_edges},
                       {"inconsistent_edges", r.m.stats.inconsistent_edges},
                       {"degenerate_triangles", r.m.stats.degenerate_triangles},

@@ -134,12 +134,20 @@ TEST(TriangleTree, SameAnswerAsTryingEveryTriangle) {
       brute = std::min(brute, irb::point_triangle_distance2(p, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}));
     }
     ASSERT_EQ(tree.distance2(p), brute) << "query " << q;
+    int32_t nearest = -1;
+    ASSERT_EQ(tree.distance2(p, &nearest), brute);
+    ASSERT_GE(nearest, 0);
+    const double* v = &soup.points[9 * size_t(nearest)];
+    ASSERT_EQ(irb::point_triangle_distance2(p, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}), brute)
+        << "the triangle reported is not at the distance";
   }
 }
 
 TEST(TriangleTree, EmptyMeshIsInfinitelyFar) {
   const TestMesh empty;
-  EXPECT_TRUE(std::isinf(irb::TriangleTree(empty.view()).distance2({0, 0, 0})));
+  int32_t nearest = 7;
+  EXPECT_TRUE(std::isinf(irb::TriangleTree(empty.view()).distance2({0, 0, 0}, &nearest)));
+  EXPECT_EQ(nearest, -1);
 }
 
 TEST(Sampling, UniformByArea) {
