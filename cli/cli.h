@@ -66,5 +66,6 @@ Command add_slice_command(CLI::App& parent);
 Command add_boxes_command(CLI::App& parent);
 Command add_stack_command(CLI::App& parent);
 Command add_curvature_volume_command(CLI::App& parent);
+Command add_reduce_command(CLI::App& parent);
 
 }  // namespace isoform::cli

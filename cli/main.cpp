@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
       isoform::cli::add_curvature_command(app),
       isoform::cli::add_slice_command(app),   isoform::cli::add_boxes_command(app),
       isoform::cli::add_stack_command(app),
-      isoform::cli::add_curvature_volume_command(app)};
+      isoform::cli::add_curvature_volume_command(app),
+      isoform::cli::add_reduce_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

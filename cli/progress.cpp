@@ -48,6 +48,8 @@ const char* stage_name(int stage) {
     case ISOFORM_STAGE_MERGE: return "merge";
     case ISOFORM_STAGE_TOPOLOGY: return "topology";
     case ISOFORM_STAGE_DONE: return "done";
+    case ISOFORM_STAGE_CURVATURE: return "curvature";
+    case ISOFORM_STAGE_REDUCE: return "reduce";
     default: return "start";
   }
 }

@@ -606,6 +606,93 @@ ISOFORM_API isoform_status isoform_volume_curvature_stats_get(const isoform_volu
  * "seed's platelet fit"; "unknown" for others. */
 ISOFORM_API const char* isoform_graph_fit_name(int fit);
 
+/* ------------------------------------------------------------------ */
+/* Reduction (Hamann 1991, Chapter 5)                                 */
+/* ------------------------------------------------------------------ */
+
+/* The stage isoform_reduce reports in isoform_progress (an isoform_stage
+ * value; ISOFORM_STAGE_CURVATURE first when the mesh had no curvature). */
+#define ISOFORM_STAGE_REDUCE 8
+
+/* How the point that replaces a removed triangle is made. */
+typedef enum isoform_reduce_point {
+  ISOFORM_REDUCE_POINT_QUADRATIC = 0, /* bivariate quadratic least squares in the triangle's
+                                         plane (5.26-5.29), curvature by Theorem 5.5 */
+  ISOFORM_REDUCE_POINT_QUADRIC = 1    /* implicit quadric through the platelet cut by the
+                                         normal line (5.30-5.33), curvature by Theorem 5.6 */
+} isoform_reduce_point;
+
+typedef struct isoform_reduce_options {
+  double keep_fraction;  /* fraction of the input's triangles to keep, (0, 1]; default 0.1.
+                            1 leaves the mesh unchanged */
+  double tolerance;      /* world units; 0 = off (default). A removal is refused when an
+                            original vertex would lie farther than this from the triangle it
+                            is tracked on, or the new point farther from the original
+                            triangles around those vertices (docs/reduce.md); the reduction
+                            then stops when nothing else can go */
+  int lock_boundary;     /* 1: never remove a triangle touching the mesh boundary, so every
+                            boundary vertex stays (Remark 5.8); default 0 */
+  int point_method;      /* isoform_reduce_point; default ISOFORM_REDUCE_POINT_QUADRATIC */
+  int graph;             /* 1: the mesh is a graph z = f(x, y); its (x, y) domain stays
+                            covered (boundary points stay on straight boundary lines);
+                            default 0 */
+  double graph_rms_tolerance; /* graph only, world units: stop before the RMS height error at
+                            the original vertices (5.41) exceeds it (Remark 5.10); 0 = off */
+  int swaps;             /* 1 (default): diagonal swaps after the fan (Definition 5.15) */
+  int measure_error;     /* 1: track the distance of `tolerance` without bounding it, and
+                            report it in isoform_reduce_stats.max_distance; default 0
+                            (it costs time: about one point-triangle test per original
+                            vertex and removal near it) */
+  int refine_point;      /* 1 (default): beyond the seed, move each new point along its
+                            normal (graph: vertically) to the least-squares best place for
+                            the original vertices under its triangles; 0: the seed's point */
+  int vertex_fallback;   /* 1 (default): beyond the seed, when the fitted point fails the
+                            half-plane test or a guard on a closed corona, try T's vertices in
+                            its place (nearest first); 0: refuse as the seed does */
+} isoform_reduce_options;
+
+ISOFORM_API void isoform_reduce_options_default(isoform_reduce_options* options);
+
+/* What the last isoform_reduce on a mesh did. */
+typedef struct isoform_reduce_stats {
+  long long triangles_before, triangles_after;
+  long long vertices_before, vertices_after;
+  long long removals;       /* triangles replaced by a point */
+  long long swaps;          /* diagonal swaps made */
+  long long vertex_points;  /* removals whose new point is a vertex of T (vertex_fallback) */
+  int passes;               /* passes of Remark 5.9 */
+  int curvature_computed;   /* 1: the mesh had no curvature, Chapter 4 ran first */
+  int stop_reason;          /* 0 target reached, 1 nothing more removable, 2 tolerance,
+                               3 graph RMS tolerance */
+  double max_distance;      /* largest tracked distance, world units (tolerance or
+                               measure_error on; else 0) */
+  double graph_rms;         /* RMS height error at the original vertices (graph RMS on) */
+  /* Candidates refused when their turn came, by reason: */
+  long long refused_corona;      /* corona discontinuous, cyclic or too small (Def. 5.3, 5.4) */
+  long long refused_half_plane;  /* the inserted point fails the half-plane test (Thm 5.3) */
+  long long refused_flip;        /* a new triangle would turn over or be degenerate */
+  long long refused_nonmanifold; /* an edge of three triangles or a duplicate triangle */
+  long long refused_boundary;    /* boundary locked, or (graph) the domain would shrink */
+  long long refused_tolerance;   /* a tolerance would be exceeded */
+} isoform_reduce_stats;
+
+/* Reduces mesh in place by iterative triangle removal (Chapter 5): the
+ * lightest triangle (angle weight times absolute curvature at its vertices)
+ * that passes the tests is replaced by one point, until keep_fraction of the
+ * triangles remain or a tolerance stops it. Curvature is computed first
+ * (isoform_curvature's defaults) when the mesh has none. Keeps the Euler
+ * characteristic, genus and parts; recomputes neighbours, parts and stats;
+ * drops colours and loose edges. A non-manifold or inconsistently oriented
+ * mesh, or NaN coordinates, give ISOFORM_ERR_INVALID_ARGUMENT naming the
+ * first offending edge or vertex; on any failure or cancel the mesh is
+ * unchanged. About O(n log n); options and progress may be NULL. */
+ISOFORM_API isoform_status isoform_reduce(isoform_mesh* mesh, const isoform_reduce_options* options,
+                                          isoform_progress* progress);
+
+/* The stats of the last isoform_reduce on mesh; ISOFORM_ERR_INVALID_ARGUMENT
+ * when it was never reduced. */
+ISOFORM_API isoform_status isoform_mesh_reduce_stats(const isoform_mesh* mesh, isoform_reduce_stats* out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -26,6 +26,9 @@ struct isoform_mesh {
   // The quantity and robust range of the curvature colours, when computed.
   int curvature_color_by = 2;
   double curvature_color_range[2] = {0.0, 0.0};
+  // The report of the last isoform_reduce (reduced false until then).
+  bool reduced = false;
+  isoform_reduce_stats reduce_stats{};
 };
 
 namespace isoform::capi {

@@ -1,0 +1,75 @@
+// `isoform reduce MESH --keep 10% -o OUT`: data reduction by iterative
+// triangle removal (Chapter 5): fewer triangles where the surface is flat.
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli.h"
+#include "contouring.h"
+#include "paths.h"
+#include "reduce_step.h"
+
+namespace isoform::cli {
+namespace {
+
+struct ReduceArgs {
+  std::string input, output, keep = "10%";
+  ReduceSettings settings;
+  ProgressOptions progress;
+  bool json = false;
+};
+
+void run_reduce(ReduceArgs& args) {
+  args.settings.keep_fraction = parse_fraction(args.keep, "--keep");
+  check_output_path(args.input, args.output, {".ply", ".obj", ".stl"});
+  isoform_mesh* raw = nullptr;
+  check(isoform_mesh_load(args.input.c_str(), &raw));
+  const MeshPtr mesh(raw);
+  if (isoform_mesh_triangle_count(mesh.get()) == 0) throw Failure(args.input + ": the mesh has no triangles");
+  const double seconds = reduce_mesh(mesh.get(), args.settings, args.input, args.progress);
+  const double write_seconds = save_mesh(mesh.get(), args.output);
+  if (args.json) {
+    Json j = {{"input", args.input}, {"output", args.output}, {"point", args.settings.point}};
+    j.update(reduce_json(mesh.get(), seconds));
+    j["parts"] = isoform_mesh_part_count(mesh.get());
+    j["write_seconds"] = write_seconds;
+    print_json(j);
+    return;
+  }
+  std::cout << args.input << ": reduced with the " << args.settings.point << " point\n";
+  print_reduce(std::cout, mesh.get(), seconds);
+  std::cout << "wrote " << args.output << '\n';
+}
+
+}  // namespace
+
+Command add_reduce_command(CLI::App& parent) {
+  auto args = std::make_shared<ReduceArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "reduce", "Remove triangles where the surface is flat (Chapter 5), keeping genus and parts");
+  app->footer(
+      "Removes the triangle of least weight (angle weight times the absolute curvature at its "
+      "vertices) again and again, replacing it by one point fitted to its neighbourhood, until "
+      "--keep of the triangles remain or --tolerance would be exceeded. Curvature is computed "
+      "first when the file has none. The mesh must be manifold and consistently oriented. "
+      "Example: isoform reduce skull.ply --keep 10% -o small.ply");
+  app->add_option("file", args->input, "Mesh file (.ply, .obj, .stl)")->required();
+  app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")->required();
+  app->add_option("--keep", args->keep, "Triangles to keep: a percentage (10%) or a fraction (0.1); default 10%");
+  app->add_option("--tolerance", args->settings.tolerance,
+                  "Largest distance, in world units, of an original vertex from the reduced surface and of "
+                  "a new point from the original (default 0: off)")
+      ->check(CLI::NonNegativeNumber);
+  app->add_flag("--lock-boundary", args->settings.lock_boundary,
+                "Never remove a triangle touching the mesh boundary (Remark 5.8)");
+  app->add_option("--point", args->settings.point,
+                  "Replacement point: quadratic (fit in the triangle's plane, 5.26) or quadric (5.30)")
+      ->check(CLI::IsMember({"quadratic", "quadric"}));
+  add_progress_flags(*app, args->progress);
+  app->add_flag("--json", args->json, "Print one JSON object instead of text");
+  return {app, [args] { run_reduce(*args); }};
+}
+
+}  // namespace isoform::cli

@@ -1,0 +1,87 @@
+// The reduction step (see reduce_step.h).
+#include "reduce_step.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+
+namespace isoform::cli {
+namespace {
+
+const char* kStopReasons[4] = {"target reached", "nothing more removable", "tolerance reached",
+                               "RMS tolerance reached"};
+
+isoform_reduce_stats stats_of(const isoform_mesh* mesh) {
+  isoform_reduce_stats s;
+  check(isoform_mesh_reduce_stats(mesh, &s));
+  return s;
+}
+
+}  // namespace
+
+double parse_fraction(const std::string& text, const std::string& flag) {
+  const bool percent = !text.empty() && text.back() == '%';
+  const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+  char* end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value))
+    throw Failure(flag + ": '" + text + "' is not a fraction (write 10% or 0.1)");
+  const double fraction = percent ? value / 100.0 : value;
+  if (!(fraction > 0 && fraction <= 1))
+    throw Failure(flag + ": '" + text + "' must lie in (0, 1], that is (0%, 100%]");
+  return fraction;
+}
+
+double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& s, const std::string& input,
+                   const ProgressOptions& progress) {
+  isoform_reduce_options o;
+  isoform_reduce_options_default(&o);
+  o.keep_fraction = s.keep_fraction;
+  o.tolerance = s.tolerance;
+  o.lock_boundary = s.lock_boundary ? 1 : 0;
+  o.point_method = s.point == "quadric" ? ISOFORM_REDUCE_POINT_QUADRIC : ISOFORM_REDUCE_POINT_QUADRATIC;
+  o.measure_error = 1;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    run_with_progress([&](isoform_progress* p) { return isoform_reduce(mesh, &o, p); }, progress);
+  } catch (const Failure& failure) {
+    throw Failure(input + ": " + failure.what(), failure.exit_code());
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Json reduce_json(const isoform_mesh* mesh, double seconds) {
+  const isoform_reduce_stats s = stats_of(mesh);
+  return Json{{"triangles_before", s.triangles_before},
+              {"triangles_after", s.triangles_after},
+              {"vertices_before", s.vertices_before},
+              {"vertices_after", s.vertices_after},
+              {"removals", s.removals},
+              {"swaps", s.swaps},
+              {"vertex_points", s.vertex_points},
+              {"passes", s.passes},
+              {"curvature_computed", s.curvature_computed != 0},
+              {"stop", kStopReasons[s.stop_reason & 3]},
+              {"max_vertex_distance", s.max_distance},
+              {"refused",
+               {{"corona", s.refused_corona},
+                {"half_plane", s.refused_half_plane},
+                {"flip", s.refused_flip},
+                {"nonmanifold", s.refused_nonmanifold},
+                {"boundary", s.refused_boundary},
+                {"tolerance", s.refused_tolerance}}},
+              {"reduce_seconds", seconds}};
+}
+
+void print_reduce(std::ostream& out, const isoform_mesh* mesh, double seconds) {
+  const isoform_reduce_stats s = stats_of(mesh);
+  print_row(out, "triangles", std::to_string(s.triangles_before) + " -> " + std::to_string(s.triangles_after));
+  print_row(out, "vertices", std::to_string(s.vertices_before) + " -> " + std::to_string(s.vertices_after));
+  print_row(out, "passes", std::to_string(s.passes) + " (" + kStopReasons[s.stop_reason & 3] + ")");
+  print_row(out, "max vertex distance", format_number(s.max_distance));
+  print_row(out, "reduce time", format_seconds(seconds));
+}
+
+}  // namespace isoform::cli

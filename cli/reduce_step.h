@@ -1,0 +1,32 @@
+// The reduction step that `reduce` and `contour --reduce` share: the keep
+// fraction as the user writes it, the call with a progress bar, the summary.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "cli.h"
+#include "progress.h"
+#include "report.h"
+
+namespace isoform::cli {
+
+struct ReduceSettings {
+  double keep_fraction = 0.1;
+  double tolerance = 0.0;
+  bool lock_boundary = false;
+  std::string point = "quadratic";  // quadratic | quadric
+};
+
+// "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.
+double parse_fraction(const std::string& text, const std::string& flag);
+
+// Runs isoform_reduce on mesh (the error measured as well) and returns the
+// seconds it took. Failures name `input`.
+double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& settings, const std::string& input,
+                   const ProgressOptions& progress);
+
+Json reduce_json(const isoform_mesh* mesh, double seconds);
+void print_reduce(std::ostream& out, const isoform_mesh* mesh, double seconds);
+
+}  // namespace isoform::cli

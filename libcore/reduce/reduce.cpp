@@ -1,0 +1,164 @@
+// Algorithm 5.1 of Hamann (1991): triangle reduction by iterative triangle
+// removal, in passes (Remark 5.9, READING-NOTES): a pass takes the
+// triangles that exist when it starts ("old") in increasing weight and tries
+// each once; triangles made during the pass ("new") wait for the next pass.
+// The queue is lazy: a pass sorts (weight, id, stamp) once, and an entry
+// whose face has changed since (stamp) or was made in this pass is skipped.
+//
+// NOTE: ties of the weight (many on regular grids, all on a plane) are
+// broken by the face id, lower first; ids are those of the input's triangle
+// table, and a new face takes the lowest id of the faces it replaces, so the
+// order is deterministic and does not depend on the platform's sort.
+#include "reduce.h"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <tuple>
+
+#include "../curvature/surface_curvature.h"
+#include "../errors.h"
+#include "../mesh_normals.h"
+#include "removal.h"
+#include "validate.h"
+#include "weights.h"
+#include "work_mesh.h"
+
+namespace isoform {
+namespace {
+
+using reduce::Outcome;
+using reduce::WorkMesh;
+
+void check_options(const ReduceOptions& o) {
+  if (!(o.keep_fraction > 0 && o.keep_fraction <= 1))
+    throw InvalidArgument("reduce: keep_fraction must be in (0, 1], not " + std::to_string(o.keep_fraction));
+  if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance))
+    throw InvalidArgument("reduce: tolerance must be a finite distance >= 0 (0 = off)");
+  if (!(o.graph_rms_tolerance >= 0) || !std::isfinite(o.graph_rms_tolerance))
+    throw InvalidArgument("reduce: graph_rms_tolerance must be finite and >= 0 (0 = off)");
+  if (o.graph_rms_tolerance > 0 && !o.graph)
+    throw InvalidArgument("reduce: graph_rms_tolerance needs graph mode (a mesh z = f(x, y))");
+}
+
+// The mesh the reduction starts from: the input with normals and curvature.
+Mesh prepared_copy(const Mesh& mesh, const Progress& progress, bool* computed) {
+  Mesh m;
+  m.points = mesh.points;
+  m.precise_points = mesh.precise_points;
+  m.triangles = mesh.triangles;
+  m.normals = mesh.normals;
+  m.curvature = mesh.curvature;
+  m.contour = mesh.contour;
+  if (m.normals.size() != m.points.size()) estimate_normals(m);
+  *computed = m.curvature.k1.size() != mesh.vertex_count();
+  if (*computed) compute_curvature(m, CurvatureOptions{}, progress);
+  return m;
+}
+
+struct Entry {
+  double weight;
+  int face;
+  uint32_t stamp;
+};
+
+void queue_pass(const WorkMesh& w, std::vector<Entry>& queue) {
+  queue.clear();
+  for (size_t f = 0; f < w.tri.size(); ++f) {
+    if (!w.face_alive[f]) continue;
+    const auto& t = w.tri[f];
+    const double sigma = reduce::angle_weight(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
+    const double weight = reduce::triangle_weight(sigma, w.absolute[size_t(t[0])], w.absolute[size_t(t[1])],
+                                                  w.absolute[size_t(t[2])]);
+    queue.push_back({weight, int(f), w.face_stamp[f]});
+  }
+  std::sort(queue.begin(), queue.end(), [](const Entry& a, const Entry& b) {
+    return std::tie(a.weight, a.face) < std::tie(b.weight, b.face);
+  });
+}
+
+void count_refusal(Outcome o, ReduceRefusals& r) {
+  switch (o) {
+    case Outcome::Corona: ++r.corona; break;
+    case Outcome::HalfPlane: ++r.half_plane; break;
+    case Outcome::Flip: ++r.flip; break;
+    case Outcome::Nonmanifold: ++r.nonmanifold; break;
+    case Outcome::Boundary: ++r.boundary; break;
+    case Outcome::Tolerance:
+    case Outcome::RmsStop: ++r.tolerance; break;
+    case Outcome::Removed: break;
+  }
+}
+
+// The passes of Remark 5.9 until the target count, a tolerance stop, or a
+// pass that removes nothing (Remark 5.11).
+void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, const Progress& progress,
+                ReduceStats& stats) {
+  reduce::Remover remover(w, options);
+  std::vector<Entry> queue;
+  const long long start = w.live_faces;
+  long long tries = 0;
+  stats.stop_reason = 0;
+  while (w.live_faces > target) {
+    const int pass = ++stats.passes;
+    queue_pass(w, queue);
+    long long removed = 0;
+    bool stop = false;
+    for (const Entry& e : queue) {
+      if (w.live_faces <= target) break;
+      const size_t f = size_t(e.face);
+      if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
+      if ((++tries & 1023) == 0) {
+        if (progress.cancelled()) throw Cancelled("reduce: cancelled");
+        progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));
+      }
+      const Outcome o = remover.try_remove(e.face, pass);
+      if (o == Outcome::Removed) {
+        ++removed;
+        ++stats.removals;
+        continue;
+      }
+      count_refusal(o, stats.refused);
+      if (o == Outcome::RmsStop) {
+        stop = true;
+        break;
+      }
+    }
+    if (stop) {
+      stats.stop_reason = 3;
+      break;
+    }
+    if (removed == 0) {
+      stats.stop_reason = options.tolerance > 0 && stats.refused.tolerance > 0 ? 2 : 1;
+      break;
+    }
+  }
+  stats.swaps = remover.swaps();
+  stats.vertex_points = remover.vertex_points();
+  stats.max_distance = remover.tracker().max_distance();
+  stats.graph_rms = remover.tracker().rms();
+}
+
+}  // namespace
+
+ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress& progress) {
+  check_options(options);
+  reduce::validate_input(mesh, "reduce");
+  ReduceStats stats;
+  stats.triangles_before = stats.triangles_after = (long long)mesh.triangle_count();
+  stats.vertices_before = stats.vertices_after = (long long)mesh.vertex_count();
+  if (options.keep_fraction >= 1.0 || mesh.triangle_count() == 0) return stats;  // an unchanged copy
+  Mesh work = prepared_copy(mesh, progress, &stats.curvature_computed);
+  progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
+  WorkMesh w = reduce::build_work_mesh(work);
+  const long long target = (long long)std::ceil(options.keep_fraction * double(mesh.triangle_count()) - 1e-9);
+  run_passes(w, options, target, progress, stats);
+  reduce::write_back(w, work.precise_points.size() == work.points.size(), work);
+  mesh = std::move(work);
+  stats.triangles_after = (long long)mesh.triangle_count();
+  stats.vertices_after = (long long)mesh.vertex_count();
+  return stats;
+}
+
+}  // namespace isoform

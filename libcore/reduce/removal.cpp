@@ -1,0 +1,217 @@
+// One removal of Algorithm 5.1 (see removal.h).
+#include "removal.h"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+namespace isoform::reduce {
+namespace {
+
+double cross_xy(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return (b(0) - a(0)) * (c(1) - a(1)) - (b(1) - a(1)) * (c(0) - a(0));
+}
+
+// Is x on the segment a-b in the (x, y) projection (to rounding)?
+bool on_segment_xy(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector2d ab(b(0) - a(0), b(1) - a(1)), ax(x(0) - a(0), x(1) - a(1));
+  const double len2 = ab.squaredNorm();
+  if (!(len2 > 0)) return ax.squaredNorm() == 0;
+  const double cr = ab(0) * ax(1) - ab(1) * ax(0), t = ab.dot(ax) / len2;
+  return std::abs(cr) <= 1e-9 * len2 && t >= -1e-9 && t <= 1 + 1e-9;
+}
+
+// The distance tracked: the tolerance, or without one an unbounded distance
+// when the error is only to be measured.
+double tracked_distance(const ReduceOptions& o) {
+  if (o.tolerance > 0) return o.tolerance;
+  return o.measure_error || (o.refine_point && !o.graph) ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+// The RMS tolerance tracked (graph mode only): the given one, or an
+// unbounded one when the point is refined by the height errors.
+double tracked_rms(const ReduceOptions& o) {
+  if (!o.graph) return 0.0;
+  if (o.graph_rms_tolerance > 0) return o.graph_rms_tolerance;
+  return o.refine_point ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+}  // namespace
+
+Remover::Remover(WorkMesh& w, const ReduceOptions& options)
+    : w_(w), options_(options),
+      tracker_(w, tracked_distance(options), tracked_rms(options)),
+      mark_(w.tri.size(), 0) {}
+
+// Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
+// open corona it is not the centroid): p's projection onto P lies strictly
+// left of every directed edge of the platelet boundary polygon (5.17).
+bool Remover::half_plane_ok(const Frame& frame, const Eigen::Vector3d& point) const {
+  const Platelet& p = platelet_;
+  const Eigen::Vector2d q = frame.uv(point);
+  const int n = int(p.ring.size());
+  for (int j = 0; j < p.link_edges(); ++j) {
+    const Eigen::Vector2d yj = frame.uv(w_.pos[size_t(p.ring[size_t(j)])]);
+    const Eigen::Vector2d yk = frame.uv(w_.pos[size_t(p.ring[size_t((j + 1) % n)])]);
+    const Eigen::Vector2d d = yk - yj;
+    const double l = -d(1) * (q(0) - yj(0)) + d(0) * (q(1) - yj(1));
+    // NOTE: relative margin, so a point on the line (to rounding) fails.
+    if (!(l > 1e-12 * d.squaredNorm())) return false;
+  }
+  return true;
+}
+
+// Graph mode: the removed boundary vertices of T lie on the two new boundary
+// edges y_first-p and p-y_last in (x, y), so the domain stays covered.
+bool Remover::domain_kept(const Eigen::Vector3d& point) const {
+  const Platelet& p = platelet_;
+  const Eigen::Vector3d& first = w_.pos[size_t(p.ring.front())];
+  const Eigen::Vector3d& last = w_.pos[size_t(p.ring.back())];
+  for (int k = 0; k < 3; ++k) {
+    if (!p.open_vertex[k]) continue;
+    const Eigen::Vector3d& x = w_.pos[size_t(p.a[size_t(k)])];
+    if (!on_segment_xy(x, first, point) && !on_segment_xy(x, point, last)) return false;
+  }
+  return true;
+}
+
+// isoform's guard: no new triangle is degenerate or turned over against the
+// corona triangle it replaces (fan faces) or against T's plane (swapped
+// faces); in graph mode every new triangle also keeps its (x, y) orientation.
+bool Remover::faces_ok(const Frame& frame, const Eigen::Vector3d& point) const {
+  const Platelet& p = platelet_;
+  for (size_t i = 0; i < faces_.tri.size(); ++i) {
+    const auto& t = faces_.tri[i];
+    const Eigen::Vector3d& x0 = local_pos(w_, p, point, t[0]);
+    const Eigen::Vector3d& x1 = local_pos(w_, p, point, t[1]);
+    const Eigen::Vector3d& x2 = local_pos(w_, p, point, t[2]);
+    const Eigen::Vector3d nn = (x1 - x0).cross(x2 - x0);
+    const double scale = std::max({(x1 - x0).squaredNorm(), (x2 - x1).squaredNorm(), (x0 - x2).squaredNorm()});
+    if (!(nn.norm() > 1e-12 * scale)) return false;
+    Eigen::Vector3d reference = frame.n;
+    if (faces_.source[i] >= 0) {
+      const auto& o = w_.tri[size_t(faces_.source[i])];
+      reference = (w_.pos[size_t(o[1])] - w_.pos[size_t(o[0])]).cross(w_.pos[size_t(o[2])] - w_.pos[size_t(o[0])]);
+    }
+    if (!(nn.dot(reference) > 0)) return false;
+    if (options_.graph && !(cross_xy(x0, x1, x2) > 1e-12 * scale)) return false;
+  }
+  return true;
+}
+
+// The half-plane test, the fan and its guards for the fitted point; when it
+// fails on a closed corona, beyond the seed, T's vertices (nearest to the
+// fitted point first) are tried in its place, as an edge collapse would.
+Outcome Remover::place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& point, bool* at_vertex) {
+  const Platelet& p = platelet_;
+  Eigen::Vector3d candidates[4] = {point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])]};
+  const Eigen::Vector3d fitted = point;
+  std::sort(candidates + 1, candidates + 4, [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+    return (x - fitted).squaredNorm() < (y - fitted).squaredNorm();
+  });
+  const int count = p.closed && options_.vertex_fallback ? 4 : 1;
+  Outcome first = Outcome::Removed;
+  for (int i = 0; i < count; ++i) {
+    Outcome o = Outcome::Removed;
+    if (!half_plane_ok(frame, candidates[i]))
+      o = Outcome::HalfPlane;
+    else if (keep_xy && !domain_kept(candidates[i]))
+      o = Outcome::Boundary;
+    else {
+      build_fan(platelet_, faces_);
+      if (!faces_ok(frame, candidates[i])) o = Outcome::Flip;
+    }
+    if (o == Outcome::Removed) {
+      point = candidates[i];
+      *at_vertex = i > 0;
+      return o;
+    }
+    if (i == 0) first = o;
+  }
+  return first;
+}
+
+Outcome Remover::try_remove(int f, int pass) {
+  const auto& t = w_.tri[size_t(f)];
+  const bool touches_boundary = w_.boundary[size_t(t[0])] || w_.boundary[size_t(t[1])] || w_.boundary[size_t(t[2])];
+  if (options_.lock_boundary && touches_boundary) return Outcome::Boundary;
+  const PlateletStatus status = gather_platelet(w_, f, mark_, &token_, platelet_);
+  if (status == PlateletStatus::Corona) return Outcome::Corona;
+  if (status == PlateletStatus::Nonmanifold) return Outcome::Nonmanifold;
+  bool plane = false;
+  const Frame frame = platelet_frame(w_, platelet_, &plane);
+  if (!plane) return Outcome::Flip;
+  const bool keep_xy = options_.graph && !platelet_.closed;
+  const Replacement r = replacement_point(w_, platelet_, frame, options_.point, keep_xy);
+  if (!r.ok || !r.point.allFinite()) return Outcome::Flip;
+  Eigen::Vector3d point = r.point;
+  bool at_vertex = false;
+  const Outcome placed = place_point(frame, keep_xy, point, &at_vertex);
+  if (placed != Outcome::Removed) return placed;
+  int swaps = 0;
+  if (options_.swaps) {
+    swaps = lawson_swaps(w_, platelet_, frame, point, mark_, token_, faces_);
+    if (swaps > 0 && !faces_ok(frame, point)) return Outcome::Flip;
+  }
+  if (options_.refine_point && tracker_.active()) {
+    Eigen::Vector3d refined = point;
+    const Eigen::Vector3d direction = options_.graph ? Eigen::Vector3d(0, 0, 1) : r.normal;
+    tracker_.refine(w_, platelet_, faces_, direction, refined);
+    // Kept only when the moved point still passes every test.
+    if (refined.allFinite() && half_plane_ok(frame, refined) && faces_ok(frame, refined)) point = refined;
+  }
+  if (tracker_.active()) {
+    bool rms_stop = false;
+    if (!tracker_.check(w_, platelet_, point, faces_, &rms_stop))
+      return rms_stop ? Outcome::RmsStop : Outcome::Tolerance;
+  }
+  swaps_ += swaps;
+  vertex_points_ += at_vertex ? 1 : 0;
+  commit(r, point, pass);
+  return Outcome::Removed;
+}
+
+// Replaces the platelet's faces by the new ones: p takes T's first vertex
+// index (5.40), the other two vertices of T go, new faces reuse the lowest
+// old ids, and every changed face gets a new stamp and the current pass.
+void Remover::commit(const Replacement& r, const Eigen::Vector3d& point, int pass) {
+  const Platelet& p = platelet_;
+  for (int f : p.faces)
+    for (int v : w_.tri[size_t(f)]) {
+      if (v == p.a[0] || v == p.a[1] || v == p.a[2]) continue;
+      auto& list = w_.vfaces[size_t(v)];
+      list.erase(std::find(list.begin(), list.end(), f));
+    }
+  for (int v : p.a) w_.vfaces[size_t(v)].clear();
+  w_.vertex_alive[size_t(p.a[1])] = w_.vertex_alive[size_t(p.a[2])] = 0;
+  ids_.assign(p.faces.begin(), p.faces.begin() + long(faces_.tri.size()));
+  for (size_t i = 0; i < p.faces.size(); ++i) {
+    const size_t id = size_t(p.faces[i]);
+    ++w_.face_stamp[id];
+    if (i >= faces_.tri.size()) {
+      w_.face_alive[id] = 0;
+      continue;
+    }
+    w_.tri[id] = faces_.tri[i];
+    w_.face_pass[id] = pass;
+    for (int v : faces_.tri[i]) w_.vfaces[size_t(v)].push_back(int(id));
+  }
+  w_.live_faces -= (long long)(p.faces.size() - faces_.tri.size());
+  const size_t a = size_t(p.a[0]);
+  w_.pos[a] = point;
+  w_.boundary[a] = p.closed ? 0 : 1;
+  w_.absolute[a] = std::abs(r.k1) + std::abs(r.k2);
+  w_.k1[a] = float(r.k1);
+  w_.k2[a] = float(r.k2);
+  w_.flags[a] = 0;
+  for (int k = 0; k < 3; ++k) {
+    w_.normal[3 * a + size_t(k)] = float(r.normal(k));
+    w_.d1[3 * a + size_t(k)] = float(r.d1(k));
+    w_.d2[3 * a + size_t(k)] = float(r.d2(k));
+  }
+  if (tracker_.active()) tracker_.commit(ids_);
+}
+
+}  // namespace isoform::reduce

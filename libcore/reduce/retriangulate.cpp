@@ -1,0 +1,103 @@
+// The fan (5.40) and the diagonal swaps (Definition 5.15).
+#include "retriangulate.h"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+
+#include "weights.h"
+
+namespace isoform::reduce {
+namespace {
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
+
+// Definition 5.15: the projected quadrilateral q0 q1 q2 q3 is strictly convex.
+bool convex_projection(const Frame& f, const Eigen::Vector3d* q) {
+  Eigen::Vector2d p[4];
+  for (int i = 0; i < 4; ++i) p[i] = f.uv(q[i]);
+  for (int i = 0; i < 4; ++i)
+    if (!(cross2(p[(i + 1) % 4] - p[i], p[(i + 2) % 4] - p[(i + 1) % 4]) > 0)) return false;
+  return true;
+}
+
+bool has_edge(const std::array<int, 3>& t, int a, int b) {
+  for (int k = 0; k < 3; ++k)
+    if ((t[size_t(k)] == a && t[size_t((k + 1) % 3)] == b) || (t[size_t(k)] == b && t[size_t((k + 1) % 3)] == a))
+      return true;
+  return false;
+}
+
+// Is a-b an edge of the mesh outside the platelet, or of the local faces?
+bool edge_exists(const WorkMesh& w, const std::vector<uint32_t>& mark, uint32_t token, const LocalFaces& faces,
+                 int a, int b) {
+  for (const auto& t : faces.tri)
+    if (has_edge(t, a, b)) return true;
+  for (int f : w.vfaces[size_t(a)]) {
+    if (mark[size_t(f)] == token) continue;
+    if (w.face_with_vertex_index(f, b) >= 0) return true;
+  }
+  return false;
+}
+
+
+// Tries to swap the diagonal shared by faces i and j; true if it did.
+bool try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
+              const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces, size_t i, size_t j) {
+  const auto& ti = faces.tri[i];
+  const auto& tj = faces.tri[j];
+  for (int k = 0; k < 3; ++k) {
+    const int x = ti[size_t(k)], y = ti[size_t((k + 1) % 3)];
+    for (int l = 0; l < 3; ++l) {
+      if (tj[size_t(l)] != y || tj[size_t((l + 1) % 3)] != x) continue;
+      const int o1 = ti[size_t((k + 2) % 3)], o2 = tj[size_t((l + 2) % 3)];
+      if (o1 == o2) return false;
+      auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
+      const Eigen::Vector3d quad[4] = {P(x), P(o2), P(y), P(o1)};
+      if (!convex_projection(frame, quad)) return false;
+      const double before = std::min(angle_weight(P(x), P(y), P(o1)), angle_weight(P(y), P(x), P(o2)));
+      const double after = std::min(angle_weight(P(o1), P(x), P(o2)), angle_weight(P(o2), P(y), P(o1)));
+      // NOTE: a margin, so that rounding cannot swap a diagonal back and forth.
+      if (!(after > before + 1e-12)) return false;
+      if (edge_exists(w, mark, token, faces, o1, o2)) return false;
+      faces.tri[i] = {o1, x, o2};
+      faces.tri[j] = {o2, y, o1};
+      faces.source[i] = faces.source[j] = -1;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void build_fan(const Platelet& p, LocalFaces& out) {
+  out.tri.clear();
+  out.source.clear();
+  const int n = int(p.ring.size());
+  for (int j = 0; j < p.link_edges(); ++j) {
+    out.tri.push_back({p.a[0], p.ring[size_t(j)], p.ring[size_t((j + 1) % n)]});
+    out.source.push_back(p.ring_face[size_t(j)]);
+  }
+}
+
+int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
+                 const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces) {
+  int swaps = 0;
+  // Each swap raises the sorted list of angle weights, so this ends; the cap
+  // only guards against rounding.
+  const int cap = 4 * int(faces.tri.size() * faces.tri.size()) + 8;
+  bool changed = true;
+  while (changed && swaps < cap) {
+    changed = false;
+    for (size_t i = 0; i < faces.tri.size() && !changed; ++i)
+      for (size_t j = i + 1; j < faces.tri.size() && !changed; ++j)
+        if (try_swap(w, p, frame, point, mark, token, faces, i, j)) {
+          ++swaps;
+          changed = true;
+        }
+  }
+  return swaps;
+}
+
+}  // namespace isoform::reduce

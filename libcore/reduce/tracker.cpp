@@ -1,0 +1,226 @@
+// Error tracking of the tolerances (see tracker.h).
+#include "tracker.h"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+namespace isoform::reduce {
+
+// Closest point on a triangle by its Voronoi regions (vertices, edges, face).
+double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ax = x - a;
+  const double d1 = ab.dot(ax), d2 = ac.dot(ax);
+  if (d1 <= 0 && d2 <= 0) return ax.norm();
+  const Eigen::Vector3d bx = x - b;
+  const double d3 = ab.dot(bx), d4 = ac.dot(bx);
+  if (d3 >= 0 && d4 <= d3) return bx.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (x - (a + d1 / (d1 - d3) * ab)).norm();
+  const Eigen::Vector3d cx = x - c;
+  const double d5 = ab.dot(cx), d6 = ac.dot(cx);
+  if (d6 >= 0 && d5 <= d6) return cx.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (x - (a + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (x - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double denom = va + vb + vc;
+  if (!(std::abs(denom) > 0)) return std::min({ax.norm(), bx.norm(), cx.norm()});
+  const double v = vb / denom, w = vc / denom;
+  return (x - (a + ab * v + ac * w)).norm();
+}
+
+Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance)
+    : distance_(distance_tolerance), rms_(rms_tolerance) {
+  if (!active()) return;
+  const size_t nv = w.pos.size(), nt = w.tri.size();
+  original_ = w.pos;
+  original_tri_ = w.tri;
+  face_start_.assign(nv + 1, 0);
+  for (size_t v = 0; v < nv; ++v) face_start_[v + 1] = face_start_[v] + int(w.vfaces[v].size());
+  face_list_.resize(size_t(face_start_[nv]));
+  for (size_t v = 0; v < nv; ++v)
+    std::copy(w.vfaces[v].begin(), w.vfaces[v].end(), face_list_.begin() + face_start_[v]);
+  head_.assign(nt, -1);
+  next_.assign(nv, -1);
+  err2_.assign(nv, 0.0);
+  for (size_t v = 0; v < nv; ++v) {
+    if (w.vfaces[v].empty()) continue;
+    const int f = w.vfaces[v].front();
+    next_[v] = head_[size_t(f)];
+    head_[size_t(f)] = int(v);
+  }
+}
+
+double Tracker::rms() const { return original_.empty() ? 0.0 : std::sqrt(sum_err2_ / double(original_.size())); }
+
+namespace {
+
+// The height of triangle (a, b, c) above x's (x, y), and how far inside it
+// x lies (its smallest barycentric coordinate in the xy projection).
+double height_above(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                    const Eigen::Vector3d& c, double* inside) {
+  const double det = (b(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (b(1) - a(1));
+  if (!(std::abs(det) > 0)) {
+    *inside = -std::numeric_limits<double>::infinity();
+    return 0;
+  }
+  const double l1 = ((x(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (x(1) - a(1))) / det;
+  const double l2 = ((b(0) - a(0)) * (x(1) - a(1)) - (x(0) - a(0)) * (b(1) - a(1))) / det;
+  *inside = std::min({1 - l1 - l2, l1, l2});
+  return (1 - l1 - l2) * a(2) + l1 * b(2) + l2 * c(2);
+}
+
+// The barycentric weight of corner a for x in triangle (a, b, c), in (x, y).
+double barycentric_xy(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                      const Eigen::Vector3d& c) {
+  const double det = (b(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (b(1) - a(1));
+  if (!(std::abs(det) > 0)) return 0;
+  const double wb = ((x(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (x(1) - a(1))) / det;
+  const double wc = ((b(0) - a(0)) * (x(1) - a(1)) - (x(0) - a(0)) * (b(1) - a(1))) / det;
+  return 1 - wb - wc;
+}
+
+}  // namespace
+
+void Tracker::refine(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, const Eigen::Vector3d& direction,
+                     Eigen::Vector3d& point) {
+  const int pv = p.a[0];
+  auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
+  double num = 0, den = 0, largest = 0;
+  for (int f : p.faces)
+    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
+      const Eigen::Vector3d& x = original_[size_t(v)];
+      // The new face x lies on (graph: above; else: nearest) and x's
+      // barycentric weight of p there.
+      double best = -std::numeric_limits<double>::infinity(), weight = 0, residual = 0, slope = 0;
+      for (const auto& t : faces.tri) {
+        const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
+        const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
+        double score = 0, lp = 0, r = 0, s = 0;
+        if (rms_ > 0) {
+          double inside = 0;
+          const double z = height_above(x, a, b, c, &inside);
+          score = inside;
+          if (k >= 0) {
+            Eigen::Vector3d lifted = x;
+            lifted(2) = z;
+            lp = barycentric_xy(lifted, P(t[size_t(k)]), P(t[size_t((k + 1) % 3)]), P(t[size_t((k + 2) % 3)]));
+          }
+          r = x(2) - z;
+          s = lp * direction(2);
+        } else {
+          score = -point_triangle_distance(x, a, b, c);
+          const Eigen::Vector3d nn = (b - a).cross(c - a);
+          const double area2 = nn.squaredNorm();
+          if (!(area2 > 0)) continue;
+          const Eigen::Vector3d n = nn / std::sqrt(area2);
+          if (k >= 0) {
+            const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - P(t[size_t((k + 1) % 3)])).cross(x - P(t[size_t((k + 1) % 3)]));
+            lp = std::clamp(opp.dot(n) / std::sqrt(area2), 0.0, 1.0);
+          }
+          r = (x - a).dot(n);
+          s = lp * direction.dot(n);
+        }
+        if (score > best) {
+          best = score;
+          weight = lp;
+          residual = r;
+          slope = s;
+        }
+      }
+      if (weight <= 0) continue;
+      num += slope * residual;
+      den += slope * slope;
+      largest = std::max(largest, std::abs(residual));
+    }
+  // NOTE: points far from p (small weights) alone make the step ill-posed:
+  // no step below the weight of one point at p's half-way, and none longer
+  // than twice the largest residual.
+  if (!(den >= 0.25)) return;
+  point += std::clamp(num / den, -2 * largest, 2 * largest) * direction;
+}
+
+bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
+                    bool* rms_stop) {
+  *rms_stop = false;
+  pending_vertex_.clear();
+  pending_face_.clear();
+  pending_err2_.clear();
+  pending_sum_ = sum_err2_;
+  pending_max_ = max_distance_;
+  auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
+  double near_original = std::numeric_limits<double>::infinity();
+  for (int f : p.faces)
+    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
+      const Eigen::Vector3d& x = original_[size_t(v)];
+      // Graph mode hands x to the new face above it, else to the nearest.
+      int best = 0;
+      double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
+      for (size_t i = 0; i < faces.tri.size(); ++i) {
+        const auto& t = faces.tri[i];
+        double score = 0, err2 = 0, d = 0;
+        if (rms_ > 0) {
+          const double z = height_above(x, P(t[0]), P(t[1]), P(t[2]), &score);
+          err2 = (x(2) - z) * (x(2) - z);
+        } else {
+          d = point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2]));
+          score = -d;
+        }
+        if (score > best_score) {
+          best_score = score;
+          best = int(i);
+          best_err2 = err2;
+          nearest = d;
+        }
+      }
+      if (rms_ > 0 && distance_ > 0) {
+        nearest = std::numeric_limits<double>::infinity();
+        for (const auto& t : faces.tri) nearest = std::min(nearest, point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2])));
+      }
+      if (distance_ > 0) {
+        if (nearest > distance_) return false;
+        pending_max_ = std::max(pending_max_, nearest);
+        // The new point against the original triangles around this vertex.
+        for (int k = face_start_[size_t(v)]; k < face_start_[size_t(v) + 1]; ++k) {
+          const auto& t = original_tri_[size_t(face_list_[size_t(k)])];
+          near_original = std::min(near_original, point_triangle_distance(point, original_[size_t(t[0])],
+                                                                          original_[size_t(t[1])],
+                                                                          original_[size_t(t[2])]));
+        }
+      }
+      if (rms_ > 0) {
+        pending_sum_ += best_err2 - err2_[size_t(v)];
+        pending_err2_.push_back(best_err2);
+      }
+      pending_vertex_.push_back(v);
+      pending_face_.push_back(best);
+    }
+  if (distance_ > 0 && near_original < std::numeric_limits<double>::infinity()) {
+    if (near_original > distance_) return false;
+    pending_max_ = std::max(pending_max_, near_original);
+  }
+  if (rms_ > 0 && std::sqrt(std::max(0.0, pending_sum_) / double(original_.size())) > rms_) {
+    *rms_stop = true;
+    return false;
+  }
+  for (int f : p.faces) head_[size_t(f)] = -1;  // re-linked on commit
+  return true;
+}
+
+void Tracker::commit(const std::vector<int>& ids) {
+  for (size_t i = 0; i < pending_vertex_.size(); ++i) {
+    const int v = pending_vertex_[i], f = ids[size_t(pending_face_[i])];
+    next_[size_t(v)] = head_[size_t(f)];
+    head_[size_t(f)] = v;
+    if (rms_ > 0) err2_[size_t(v)] = pending_err2_[i];
+  }
+  sum_err2_ = pending_sum_;
+  max_distance_ = pending_max_;
+}
+
+}  // namespace isoform::reduce

@@ -1,0 +1,64 @@
+// Error tracking for the reduction's tolerances. Every original vertex is
+// assigned to one current triangle; when a removal replaces triangles, their
+// vertices are handed to the nearest new triangle. That gives, per removal
+// and before anything changes:
+// - distance mode (any surface): each original vertex's distance to its
+//   triangle (an upper bound of its distance to the reduced surface), and the
+//   new point's distance to the original triangles around the same original
+//   vertices, so both directions are bounded at vertices (docs/reduce.md);
+// - graph mode: the height error at each original knot of the triangle above
+//   it, summed over all knots for the RMS of (5.41) (Remark 5.10).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "retriangulate.h"
+
+namespace isoform::reduce {
+
+class Tracker {
+ public:
+  // Call on the input, before any removal.
+  Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance);
+  bool active() const { return distance_ > 0 || rms_ > 0; }
+
+  // Moves the new point along `direction` (unit) to the least-squares best
+  // place for the original vertices under the platelet's faces, one
+  // Gauss-Newton step on their distances to the new faces (graph mode: their
+  // height errors, exactly). Beyond the seed: its point lies on the fitted
+  // surface, and a piecewise linear surface through points on a curved
+  // surface is on one side of it.
+  void refine(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, const Eigen::Vector3d& direction,
+              Eigen::Vector3d& point);
+
+  // Checks the removal whose old faces are p.faces and new faces `faces`
+  // with p at `point`. False when a tolerance would be exceeded; *rms_stop
+  // is set when it is the RMS one (Remark 5.10: the reduction stops).
+  bool check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
+             bool* rms_stop);
+  // Applies the last successful check; ids[i] is the face id given to faces[i].
+  void commit(const std::vector<int>& ids);
+
+  double max_distance() const { return max_distance_; }
+  double rms() const;
+
+ private:
+  double distance_, rms_;
+  std::vector<Eigen::Vector3d> original_;
+  std::vector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
+  std::vector<std::array<int, 3>> original_tri_;
+  std::vector<int> head_, next_;  // current face -> its original vertices (linked)
+  std::vector<double> err2_;      // per original vertex: squared height error (graph mode)
+  double sum_err2_ = 0, max_distance_ = 0;
+  // The pending assignment of the last check.
+  std::vector<int> pending_vertex_, pending_face_;
+  std::vector<double> pending_err2_;
+  double pending_sum_ = 0, pending_max_ = 0;
+};
+
+double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c);
+
+}  // namespace isoform::reduce

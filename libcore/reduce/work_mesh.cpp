@@ -1,0 +1,103 @@
+// Building the working structure of the reduction and writing its result back.
+#include "work_mesh.h"
+
+#include <cmath>
+
+#include "../topology.h"
+
+namespace isoform::reduce {
+
+WorkMesh build_work_mesh(const Mesh& mesh) {
+  WorkMesh w;
+  const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
+  const bool precise = mesh.precise_points.size() == 3 * nv;
+  w.pos.resize(nv);
+  for (size_t v = 0; v < nv; ++v)
+    for (int k = 0; k < 3; ++k)
+      w.pos[v][k] = precise ? mesh.precise_points[3 * v + k] : double(mesh.points[3 * v + k]);
+  w.tri.resize(nt);
+  for (size_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k) w.tri[t][size_t(k)] = mesh.triangles[3 * t + k];
+  w.face_alive.assign(nt, 1);
+  w.face_stamp.assign(nt, 0);
+  w.face_pass.assign(nt, 0);
+  w.live_faces = (long long)nt;
+  std::vector<int> degree(nv, 0);
+  for (const auto& t : w.tri)
+    for (int v : t) ++degree[size_t(v)];
+  w.vfaces.resize(nv);
+  for (size_t v = 0; v < nv; ++v) w.vfaces[v].reserve(size_t(degree[v]));
+  for (size_t t = 0; t < nt; ++t)
+    for (int v : w.tri[t]) w.vfaces[size_t(v)].push_back(int(t));
+  w.vertex_alive.assign(nv, 1);
+  // A vertex is on the boundary when one of its edges has one triangle: with
+  // consistent orientation, a directed edge v->x without its reverse x->v.
+  w.boundary.assign(nv, 0);
+  for (size_t v = 0; v < nv; ++v) {
+    for (int f : w.vfaces[v]) {
+      const int i = w.face_with_vertex_index(f, int(v));
+      const int next = w.tri[size_t(f)][size_t((i + 1) % 3)];
+      bool reverse = false;
+      for (int g : w.vfaces[v]) {
+        const int j = w.face_with_vertex_index(g, int(v));
+        if (w.tri[size_t(g)][size_t((j + 2) % 3)] == next) reverse = true;
+      }
+      if (!reverse) w.boundary[v] = 1;
+    }
+  }
+  const VertexCurvature& c = mesh.curvature;
+  w.absolute.resize(nv);
+  for (size_t v = 0; v < nv; ++v) w.absolute[v] = c.absolute[v];
+  w.k1 = c.k1;
+  w.k2 = c.k2;
+  w.d1 = c.d1;
+  w.d2 = c.d2;
+  w.flags = c.flags;
+  w.normal = mesh.normals;
+  return w;
+}
+
+void write_back(const WorkMesh& w, bool precise, Mesh& mesh) {
+  const size_t nv = w.pos.size();
+  std::vector<int32_t> remap(nv, -1);
+  int32_t next = 0;
+  for (size_t v = 0; v < nv; ++v)
+    if (w.vertex_alive[v] && !w.vfaces[v].empty()) remap[v] = next++;
+  Mesh out;
+  out.points.resize(3 * size_t(next));
+  if (precise) out.precise_points.resize(3 * size_t(next));
+  out.normals.resize(3 * size_t(next));
+  VertexCurvature& c = out.curvature;
+  for (auto* a : {&c.k1, &c.k2, &c.mean, &c.gauss, &c.absolute}) a->resize(size_t(next));
+  c.d1.resize(3 * size_t(next));
+  c.d2.resize(3 * size_t(next));
+  c.flags.resize(size_t(next));
+  for (size_t v = 0; v < nv; ++v) {
+    const int32_t r = remap[v];
+    if (r < 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      out.points[3 * size_t(r) + k] = float(w.pos[v][k]);
+      if (precise) out.precise_points[3 * size_t(r) + k] = w.pos[v][k];
+      out.normals[3 * size_t(r) + k] = w.normal[3 * v + k];
+      c.d1[3 * size_t(r) + k] = w.d1[3 * v + k];
+      c.d2[3 * size_t(r) + k] = w.d2[3 * v + k];
+    }
+    c.k1[size_t(r)] = w.k1[v];
+    c.k2[size_t(r)] = w.k2[v];
+    c.mean[size_t(r)] = 0.5f * (w.k1[v] + w.k2[v]);
+    c.gauss[size_t(r)] = w.k1[v] * w.k2[v];
+    c.absolute[size_t(r)] = float(w.absolute[v]);
+    c.flags[size_t(r)] = w.flags[v];
+  }
+  for (size_t t = 0; t < w.tri.size(); ++t) {
+    if (!w.face_alive[t]) continue;
+    for (int v : w.tri[t]) out.triangles.push_back(remap[size_t(v)]);
+  }
+  c.stats = mesh.curvature.stats;
+  c.stats.vertices = next;
+  out.contour = mesh.contour;
+  compute_topology(out);
+  mesh = std::move(out);
+}
+
+}  // namespace isoform::reduce

@@ -1,0 +1,53 @@
+// The working structure of the reduction: a face table with per-vertex
+// face lists, alive flags and per-face stamps (for the lazy queue), and the
+// per-vertex data the reduction carries (absolute curvature for the weights,
+// curvature and normals for the result).
+//
+// NOTE: not OpenMesh. Removing a triangle is a contraction of three vertices
+// into one with a local re-triangulation that is computed and checked before
+// anything changes (docs/reduce.md). With a face table and vertex face lists
+// that is a direct edit of a few dozen entries; in OpenMesh it is two edge
+// collapses whose own preconditions differ from the corona conditions, plus
+// flips and a garbage collection.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "../mesh.h"
+
+namespace isoform::reduce {
+
+struct WorkMesh {
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::array<int, 3>> tri;
+  std::vector<uint8_t> face_alive;
+  std::vector<uint32_t> face_stamp;  // changes whenever the face does
+  std::vector<int> face_pass;        // the pass that made the face (0: input)
+  std::vector<std::vector<int>> vfaces;
+  std::vector<uint8_t> vertex_alive, boundary;
+  // Per vertex: absolute curvature |k1| + |k2| (the weights), and the rest
+  // of the curvature and the normal for the result.
+  std::vector<double> absolute;
+  std::vector<float> k1, k2, normal, d1, d2;
+  std::vector<uint8_t> flags;
+  long long live_faces = 0;
+
+  int face_with_vertex_index(int f, int v) const {
+    const auto& t = tri[size_t(f)];
+    return t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+  }
+};
+
+// Builds the structure from a validated mesh that carries curvature and
+// normals (precise points are used when present).
+WorkMesh build_work_mesh(const Mesh& mesh);
+
+// Writes the surviving vertices (in their order) and faces back into mesh,
+// with normals and curvature; recomputes neighbours, parts and stats.
+void write_back(const WorkMesh& work, bool precise, Mesh& mesh);
+
+}  // namespace isoform::reduce

@@ -1,0 +1,161 @@
+"""The `isoform reduce` command and `contour --reduce`, run as a program:
+closed contours stay closed with the same genus and parts, --keep as a
+percentage or a fraction, the boundary lock, --json, and bad input. Shares
+test_cli.py's helpers.
+
+Usage: test_cli_reduce.py ISOFORM_BINARY SHARED_DATA_DIR GROUP"""
+import os
+import sys
+from collections import Counter
+
+import test_cli as base
+from test_cli import expect, run, run_json, data, leftovers, expect_failure
+
+
+def euler(points, faces):
+    edges = {(min(a, b), max(a, b)) for f in faces for a, b in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0]))}
+    return len(points) - len(edges) + len(faces)
+
+
+def parts(faces):
+    """Connected parts over shared edges (as the library counts them)."""
+    parent = list(range(len(faces)))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    first = {}
+    for i, f in enumerate(faces):
+        for a, b in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0])):
+            key = (min(a, b), max(a, b))
+            if key in first:
+                parent[find(i)] = find(first[key])
+            else:
+                first[key] = i
+    return len({find(i) for i in range(len(faces))})
+
+
+def boundary_points(points, faces):
+    count = Counter((min(a, b), max(a, b)) for f in faces for a, b in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0])))
+    return {points[v] for e, n in count.items() if n == 1 for v in e}
+
+
+def write_grid_obj(path, n):
+    """An n x n grid of the paraboloid z = .4(x^2 + y^2) over [-1, 1]^2 (a mesh with a boundary)."""
+    with open(path, "w") as f:
+        for j in range(n):
+            for i in range(n):
+                x, y = -1 + 2 * i / (n - 1), -1 + 2 * j / (n - 1)
+                f.write(f"v {x:.9g} {y:.9g} {0.4 * (x * x + y * y):.9g}\n")
+        for j in range(n - 1):
+            for i in range(n - 1):
+                a = j * n + i + 1
+                f.write(f"f {a} {a + 1} {a + n + 1}\nf {a} {a + n + 1} {a + n}\n")
+
+
+def case_help(tmp):
+    proc = run("reduce", "--help")
+    for option in ("--keep", "--tolerance", "--lock-boundary", "--point", "--json", "--progress", "--quiet"):
+        expect(option in proc.stdout, f"reduce --help does not mention {option}")
+    expect("--reduce" in run("contour", "--help").stdout, "contour --help does not mention --reduce")
+
+
+def case_cube_reduced_90(tmp):
+    """cube.vdb's contour reduced by 90%: closed, manifold, same genus and parts."""
+    mesh = os.path.join(tmp, "cube.obj")
+    run("contour", data("cube.vdb"), "-o", mesh)
+    points, _, faces = base.read_obj(mesh)
+    out = os.path.join(tmp, "small.obj")
+    summary, _ = run_json("reduce", mesh, "--keep", "10%", "-o", out)
+    small_points, _, small = base.read_obj(out)
+    base.check_closed(small, len(small_points), out)
+    expect(summary["triangles_before"] == len(faces) and summary["triangles_after"] == len(small),
+           f"summary {summary['triangles_before']} -> {summary['triangles_after']}, files {len(faces)} -> {len(small)}")
+    expect(len(small) <= 0.1 * len(faces), f"{len(small)} of {len(faces)} triangles kept")
+    expect(euler(small_points, small) == euler(points, faces), "Euler characteristic changed")
+    expect(parts(small) == parts(faces) == summary["parts"], f"parts {parts(faces)} -> {parts(small)}")
+    expect(summary["max_vertex_distance"] > 0, f"no error measured: {summary}")
+    expect(sorted(leftovers(tmp, [])) == ["cube.obj", "small.obj"], f"left {leftovers(tmp, [])}")
+
+
+def case_contour_reduce(tmp):
+    """contour --reduce 90% chains the reduction; the same as reduce --keep 0.1."""
+    direct = os.path.join(tmp, "sphere.obj")
+    summary, _ = run_json("contour", data("sphere.vdb"), "--reduce", "90%", "-o", direct)
+    points, _, faces = base.read_obj(direct)
+    base.check_closed(faces, len(points), direct)
+    r = summary["reduce"]
+    expect(r["triangles_after"] == len(faces) == summary["triangles"], f"{r} vs {len(faces)}")
+    expect(len(faces) <= 0.1 * r["triangles_before"], f"{len(faces)} of {r['triangles_before']}")
+    expect(euler(points, faces) == 2, "the sphere is no longer a sphere")
+    full = os.path.join(tmp, "full.obj")
+    run("contour", data("sphere.vdb"), "-o", full)
+    again = os.path.join(tmp, "again.obj")
+    run("reduce", full, "--keep", "0.1", "-o", again)
+    expect(base.read_obj(again)[2] == faces, "contour --reduce 90% differs from reduce --keep 0.1")
+
+
+def case_keep_all_is_a_copy(tmp):
+    mesh = os.path.join(tmp, "cube.obj")
+    run("contour", data("cube.vdb"), "-o", mesh)
+    out = os.path.join(tmp, "copy.obj")
+    summary, _ = run_json("reduce", mesh, "--keep", "100%", "-o", out)
+    a, b = base.read_obj(mesh), base.read_obj(out)
+    expect(a[0] == b[0] and a[2] == b[2], "--keep 100% changed the mesh")
+    expect(summary["removals"] == 0, f"{summary}")
+
+
+def case_boundary(tmp):
+    """A mesh with a boundary reduces; --lock-boundary keeps every boundary vertex."""
+    mesh = os.path.join(tmp, "grid.obj")
+    write_grid_obj(mesh, 21)
+    points, _, faces = base.read_obj(mesh)
+    rim = boundary_points(points, faces)
+    free_out, locked_out = os.path.join(tmp, "free.obj"), os.path.join(tmp, "locked.obj")
+    run("reduce", mesh, "--keep", "20%", "-o", free_out)
+    run("reduce", mesh, "--keep", "20%", "--lock-boundary", "-o", locked_out)
+    fp, _, ff = base.read_obj(free_out)
+    lp, _, lf = base.read_obj(locked_out)
+    expect(euler(fp, ff) == euler(lp, lf) == 1, "a disk is no longer a disk")
+    expect(boundary_points(lp, lf) == rim, "--lock-boundary lost boundary vertices")
+    expect(len(boundary_points(fp, ff)) < len(rim), "without the lock no boundary vertex went")
+    expect(len(ff) <= 0.2 * len(faces), f"{len(ff)} of {len(faces)} kept")
+
+
+def case_single_triangle(tmp):
+    mesh = os.path.join(tmp, "one.obj")
+    with open(mesh, "w") as f:
+        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    out = os.path.join(tmp, "out.obj")
+    summary, _ = run_json("reduce", mesh, "-o", out)
+    expect(len(base.read_obj(out)[2]) == 1 and summary["removals"] == 0, f"{summary}")
+
+
+def case_bad_input(tmp):
+    fin = os.path.join(tmp, "fin.obj")
+    with open(fin, "w") as f:
+        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n")
+    out = os.path.join(tmp, "out.obj")
+    expect_failure(tmp, ["reduce", fin, "-o", out], ["fin.obj", "not manifold", "edge (0, 1)"], ["fin.obj"])
+    nan = os.path.join(tmp, "nan.obj")
+    with open(nan, "w") as f:
+        f.write("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
+    expect_failure(tmp, ["reduce", nan, "-o", out], ["nan.obj"], ["fin.obj", "nan.obj"])
+    for keep in ("0%", "150%", "ten"):
+        expect_failure(tmp, ["reduce", fin, "--keep", keep, "-o", out], ["--keep", keep], ["fin.obj", "nan.obj"])
+    expect_failure(tmp, ["reduce", fin, "-o", fin], ["fin.obj"], ["fin.obj", "nan.obj"])
+    expect_failure(tmp, ["contour", data("cube.vdb"), "--reduce", "100%", "-o", out], ["--reduce"],
+                   ["fin.obj", "nan.obj"])
+
+
+GROUPS = {
+    "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary],
+    "reduce_contours": [case_cube_reduced_90, case_contour_reduce],
+}
+
+
+if __name__ == "__main__":
+    base.run_groups(GROUPS, sys.argv)
