@@ -67,6 +67,10 @@ Command add_reduce_command(CLI::App& parent) {
   app->add_option("--point", args->settings.point,
                   "Replacement point: quadratic (fit in the triangle's plane, 5.26) or quadric (5.30)")
       ->check(CLI::IsMember({"quadratic", "quadric"}));
+  app->add_flag("--on-surface{false}", args->settings.refine_point,
+                "Keep each new point on its fitted surface, as the seed does, instead of moving it "
+                "to the least-squares best place for the original vertices: for surfaces that "
+                "interpolate the vertices (isoform patch)");
   add_progress_flags(*app, args->progress);
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args] { run_reduce(*args); }};

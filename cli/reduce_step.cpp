@@ -41,6 +41,7 @@ double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& s, const std::strin
   o.keep_fraction = s.keep_fraction;
   o.tolerance = s.tolerance;
   o.lock_boundary = s.lock_boundary ? 1 : 0;
+  o.refine_point = s.refine_point ? 1 : 0;
   o.point_method = s.point == "quadric" ? ISOFORM_REDUCE_POINT_QUADRIC : ISOFORM_REDUCE_POINT_QUADRATIC;
   o.measure_error = 1;
   const auto start = std::chrono::steady_clock::now();

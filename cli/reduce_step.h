@@ -16,6 +16,7 @@ struct ReduceSettings {
   double tolerance = 0.0;
   bool lock_boundary = false;
   std::string point = "quadratic";  // quadratic | quadric
+  bool refine_point = true;          // false: the seed's point on the fitted surface
 };
 
 // "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.

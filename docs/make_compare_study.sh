@@ -40,8 +40,8 @@ contour() {  # volume iso out [orientation]
 # base meshes: name-full.ply, then name-80.ply and name-95.ply (80% and 95% removed)
 bases() {  # name full.ply coarse80.ply coarse95.ply
   if [ "$have_reduce" = 1 ]; then
-    "$iso" reduce "$2" --keep 0.2 -o "$work/$1-80.ply" >/dev/null
-    "$iso" reduce "$2" --keep 0.05 -o "$work/$1-95.ply" >/dev/null
+    "$iso" reduce "$2" --keep 0.2 --on-surface -o "$work/$1-80.ply" >/dev/null
+    "$iso" reduce "$2" --keep 0.05 --on-surface -o "$work/$1-95.ply" >/dev/null
   else
     cp "$3" "$work/$1-80.ply"
     cp "$4" "$work/$1-95.ply"

@@ -635,8 +635,8 @@ typedef struct isoform_compare_options {
                             triangles per base triangle, k samples per edge; default 8 */
   int reference;         /* isoform_reference_kind; default ISOFORM_REFERENCE_NONE (VOLUME
                             is implied when a volume is passed) */
-  int fit_reference;     /* sphere, torus: 1 (default) takes the centre as the vertices'
-                            centroid and the radii as mean distances (torus: from the z axis
+  int fit_reference;     /* sphere, torus: 1 (default) takes the centre as the triangles'
+                            area-weighted centroid and the radii as mean distances (torus: from the z axis
                             through the centre, then from that circle); 0 uses the fields below */
   double centre[3];      /* sphere, torus: centre, world units; default 0, 0, 0 */
   double radius;         /* sphere radius or torus major radius, world units; default 1 */

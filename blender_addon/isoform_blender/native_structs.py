@@ -172,6 +172,8 @@ class ReduceOptions(ctypes.Structure):
         ("graph_rms_tolerance", ctypes.c_double),
         ("swaps", ctypes.c_int),
         ("measure_error", ctypes.c_int),
+        ("refine_point", ctypes.c_int),
+        ("vertex_fallback", ctypes.c_int),
     ]
 
 
@@ -184,6 +186,7 @@ class ReduceStats(ctypes.Structure):
         ("vertices_after", c_long_long),
         ("removals", c_long_long),
         ("swaps", c_long_long),
+        ("vertex_points", c_long_long),
         ("passes", ctypes.c_int),
         ("curvature_computed", ctypes.c_int),
         ("stop_reason", ctypes.c_int),
@@ -235,6 +238,7 @@ class CompareOptions(ctypes.Structure):
         ("loop_sharp_corners", ctypes.c_int),
         ("table_triangles", c_long_long),
         ("input_name", ctypes.c_char_p),
+        ("side_vertex", ctypes.c_int),
     ]
 
 

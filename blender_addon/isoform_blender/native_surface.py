@@ -16,7 +16,11 @@ REDUCE_POINTS = {"quadratic": 0, "quadric": 1}
 PATCH_BLENDS = {"printed": 0, "squared": 1}
 
 
-def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point=None):
+def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point=None,
+                   on_surface=None):
+    """on_surface: keep each new point on its fitted surface (the seed's point)
+    instead of the least-squares best place; for the side-vertex surface,
+    which interpolates the vertices."""
     lib = native.library()
     options = structs.ReduceOptions()
     lib.reduce_options_default(ctypes.byref(options))
@@ -28,6 +32,8 @@ def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point
         options.lock_boundary = 1 if lock_boundary else 0
     if point is not None:
         options.point_method = native._choice(REDUCE_POINTS, point, "replacement point")
+    if on_surface is not None:
+        options.refine_point = 0 if on_surface else 1
     return options
 
 

@@ -123,10 +123,31 @@ class VolumeReference : public Reference {
   std::string what_;
 };
 
+Vec3d point(const Mesh& mesh, size_t v);
+
+// The area-weighted centroid of the triangles: the centre of a symmetric
+// surface however unevenly its vertices are spread (a reduced mesh keeps
+// more of them where its curvature estimate was higher; their plain mean
+// lies off the centre). The vertices' mean for a mesh without area.
 Vec3d centroid(const Mesh& mesh) {
   Vec3d c{0, 0, 0};
+  double area = 0.0;
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Vec3d a = point(mesh, size_t(mesh.triangles[3 * t]));
+    const Vec3d b = point(mesh, size_t(mesh.triangles[3 * t + 1]));
+    const Vec3d d = point(mesh, size_t(mesh.triangles[3 * t + 2]));
+    const Vec3d u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    const double twice = std::hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                    u[0] * w[1] - u[1] * w[0]);
+    for (int k = 0; k < 3; ++k) c[k] += twice * (a[k] + b[k] + d[k]) / 3.0;
+    area += twice;
+  }
+  if (area > 0.0) {
+    for (double& x : c) x /= area;
+    return c;
+  }
   for (size_t v = 0; v < mesh.vertex_count(); ++v)
-    for (int a = 0; a < 3; ++a) c[a] += mesh.points[3 * v + size_t(a)];
+    for (int k = 0; k < 3; ++k) c[k] += mesh.points[3 * v + size_t(k)];
   for (double& x : c) x /= double(std::max<size_t>(1, mesh.vertex_count()));
   return c;
 }

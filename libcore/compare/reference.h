@@ -35,7 +35,7 @@ std::unique_ptr<Reference> make_volume_reference(const ScalarGrid& grid, double 
                                                  const std::string& what);
 
 // Least-squares-free fits for when the caller gives no parameters: the
-// centroid of the vertices and their mean distance from it (sphere); the
+// area-weighted centroid of the triangles and their mean distance from it (sphere); the
 // centroid, the mean distance from the z axis through it (major) and the
 // mean distance from that circle (minor) (torus).
 void fit_sphere(const Mesh& mesh, Vec3d& centre, double& radius);

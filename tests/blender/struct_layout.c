@@ -154,6 +154,8 @@ int main(void) {
   FIELD(isoform_reduce_options, graph_rms_tolerance);
   FIELD(isoform_reduce_options, swaps);
   FIELD(isoform_reduce_options, measure_error);
+  FIELD(isoform_reduce_options, refine_point);
+  FIELD(isoform_reduce_options, vertex_fallback);
   end();
 
   begin("isoform_reduce_stats", sizeof(isoform_reduce_stats));
@@ -163,6 +165,7 @@ int main(void) {
   FIELD(isoform_reduce_stats, vertices_after);
   FIELD(isoform_reduce_stats, removals);
   FIELD(isoform_reduce_stats, swaps);
+  FIELD(isoform_reduce_stats, vertex_points);
   FIELD(isoform_reduce_stats, passes);
   FIELD(isoform_reduce_stats, curvature_computed);
   FIELD(isoform_reduce_stats, stop_reason);
@@ -205,6 +208,7 @@ int main(void) {
   FIELD(isoform_compare_options, loop_sharp_corners);
   FIELD(isoform_compare_options, table_triangles);
   FIELD(isoform_compare_options, input_name);
+  FIELD(isoform_compare_options, side_vertex);
   end();
 
   begin("isoform_compare_stats", sizeof(isoform_compare_stats));

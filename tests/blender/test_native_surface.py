@@ -41,8 +41,11 @@ def case_reduce_keeps_the_fraction_and_the_topology():
                f"{mesh.triangle_count} triangles left of {before}")
         expect(after.boundary_edges == 0 and after.nonmanifold_edges == 0 and
                after.euler_characteristic == 2 and after.parts == 1, f"mesh stats {after}")
+        # New points move to the least-squares best place for the original
+        # vertices, off the sphere by a fraction of the larger triangles' sagitta.
         radius = np.linalg.norm(mesh.points(), axis=1)
-        expect(np.all(np.abs(radius - 0.7) < 0.01), f"radius {radius.min()}..{radius.max()}")
+        expect(np.all(np.abs(radius - 0.7) < 0.025) and np.sqrt(np.mean((radius - 0.7) ** 2)) < 0.01,
+               f"radius {radius.min()}..{radius.max()}")
 
 
 def case_reduce_matches_cli():
@@ -113,12 +116,14 @@ def case_patch_errors_name_the_sample():
 # ---------------------------------------------------------------- compare
 
 def case_compare_loop_against_side_vertex():
-    """The sphere contour reduced to 600 triangles against the fitted sphere:
-    the side-vertex surface passes through the vertices, Loop's limit does
-    not; both are far closer to the sphere than the flat triangles; the Loop
-    tessellation has level^2 triangles per base triangle and is closed."""
+    """The sphere contour reduced to 600 triangles, new points kept on their
+    fitted surfaces, against the fitted sphere: the side-vertex surface
+    passes through the vertices, Loop's limit does not; the side-vertex
+    surface is far closer to the sphere than the flat triangles, Loop (which
+    shrinks convex data) is not; the Loop tessellation has level^2 triangles
+    per base triangle and is closed."""
     with sphere_contour() as mesh:
-        surface.reduce(mesh, keep_fraction=600 / mesh.triangle_count)
+        surface.reduce(mesh, keep_fraction=600 / mesh.triangle_count, on_surface=True)
         result = surface.compare(mesh, level=4, reference="sphere")
         metrics = result["metrics"]
         expect(set(metrics) == {"linear", "loop", "side-vertex"}, f"surfaces {sorted(metrics)}")
@@ -126,9 +131,10 @@ def case_compare_loop_against_side_vertex():
         side, loop, flat = metrics["side-vertex"], metrics["loop"], metrics["linear"]
         expect(side["data_point_error"]["max"] < 1e-6, f"side-vertex {side['data_point_error']}")
         expect(loop["data_point_error"]["max"] > 1e-4, f"loop {loop['data_point_error']}")
-        for name in ("side-vertex", "loop"):
-            expect(metrics[name]["deviation"]["rms"] < flat["deviation"]["rms"] / 3,
-                   f"{name} deviation {metrics[name]['deviation']} vs flat {flat['deviation']}")
+        expect(side["deviation"]["rms"] < flat["deviation"]["rms"] / 5,
+               f"side-vertex deviation {side['deviation']} vs flat {flat['deviation']}")
+        expect(loop["deviation"]["rms"] > flat["deviation"]["rms"],
+               f"loop deviation {loop['deviation']} vs flat {flat['deviation']}")
         arrays = result["tessellations"]["loop"]
         expect(len(arrays.triangles) == 16 * mesh.triangle_count and arrays.stats.boundary_edges == 0,
                f"loop tessellation {len(arrays.triangles)} triangles, {arrays.stats}")
