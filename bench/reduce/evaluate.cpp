@@ -66,8 +66,11 @@ void knot_error(const Input& in, const Surface& result, Measured& m) {
             ++acc.uncovered;
             continue;
           }
-          const double u = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det;
-          const double v = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
+          // The knot lies in the triangle, so its barycentric coordinates are
+          // in [0, 1]; on slivers rounding can throw them far out: clamp.
+          double u = std::max(0.0, ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det);
+          double v = std::max(0.0, ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det);
+          if (u + v > 1) u /= u + v, v = 1 - u;
           const double d = std::abs(a[2] + u * (b[2] - a[2]) + v * (c[2] - a[2]) - in.height(x, y));
           acc.max = std::max(acc.max, d);
           acc.sum2 += d * d;
