@@ -627,7 +627,8 @@ typedef enum isoform_reference_kind {
   ISOFORM_REFERENCE_NONE = 0,   /* no deviation measured */
   ISOFORM_REFERENCE_SPHERE = 1, /* exact distance from a sphere, world units */
   ISOFORM_REFERENCE_TORUS = 2,  /* exact distance from a torus around the z axis, world units */
-  ISOFORM_REFERENCE_VOLUME = 3  /* |f(x) - iso| / |grad f| of a grid's trilinear interpolant, voxels */
+  ISOFORM_REFERENCE_VOLUME = 3  /* |f(x) - iso| / |grad f| of a grid's trilinear interpolant, voxels;
+                                   samples where grad f = 0 (flat cells) are left out */
 } isoform_reference_kind;
 
 typedef struct isoform_compare_options {

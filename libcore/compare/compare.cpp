@@ -90,7 +90,7 @@ class SurfacePass {
         }
         if (reference_ && ok[p]) {
           val.deviation = reference_->deviation(s.point);
-          deviation.add(val.deviation);
+          if (std::isfinite(val.deviation)) deviation.add(val.deviation);  // NaN: undefined there
           const double h_true = reference_->mean_curvature(s.point);
           if (c.ok && std::isfinite(h_true)) h_error.add(c.mean - h_true);
         }

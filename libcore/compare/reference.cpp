@@ -93,7 +93,9 @@ class VolumeReference : public Reference {
     const double f = trilinear(g, t[0], t[1], t[2]);
     const Vec3d grad = gradient(g, t[0], t[1], t[2]);
     const double len = std::hypot(grad[0], grad[1], grad[2]);
-    return len > 0.0 ? std::abs(f - iso_) / len : std::numeric_limits<double>::infinity();
+    // Where the interpolant is flat (a cell of equal values) the distance is
+    // undefined: NaN, which the measures leave out.
+    return len > 0.0 ? std::abs(f - iso_) / len : kNaN;
   }
   double mean_curvature(const Vec3d&) const override { return kNaN; }
   std::string unit() const override { return "voxels"; }
