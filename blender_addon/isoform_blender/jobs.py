@@ -64,6 +64,19 @@ class JobOperator:
         """Called from invoke(): execute() may then run the work in the background."""
         self._interactive = True
 
+    def copy_unset_from(self, context):
+        """Settings mixins (settings.SharedSettings) take the sidebar's values here."""
+
+    # NOTE: Blender calls invoke() only with a window; in background mode
+    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
+    def invoke(self, context, event):
+        self.mark_interactive()
+        return self.execute(context)
+
+    def execute(self, context):
+        self.copy_unset_from(context)
+        return self.run(context)
+
     def run(self, context):
         """The body of execute()."""
         from . import native
@@ -136,3 +149,13 @@ def _result_of(job):
     if job.progress.cancelled:
         raise native.CancelledError("cancelled")
     return job.result
+
+
+class MeshJobOperator(JobOperator):
+    """A JobOperator on the active mesh object, in Object Mode."""
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.type == 'MESH' and context.mode == 'OBJECT'
+

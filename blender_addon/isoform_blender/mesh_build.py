@@ -200,3 +200,10 @@ def replace_geometry(obj, arrays):
     if old.users == 0:
         bpy.data.meshes.remove(old)
     return mesh
+
+
+def world_normals(obj, matrix):
+    """The mesh's vertex normals (vertex_normals) in world space, by the
+    inverse transpose of the 4x4 world matrix, as float64."""
+    return vertex_normals(obj.data).astype(np.float64) @ np.linalg.inv(matrix[:3, :3])
+

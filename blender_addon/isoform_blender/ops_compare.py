@@ -14,14 +14,14 @@ import json
 import bpy
 import numpy as np
 
-from .jobs import JobOperator, UserError
+from .jobs import MeshJobOperator, UserError
 from .settings import CompareSettings, SmoothSettings
 
 PROPERTY = "isoform_compare"
 LOOP_SUFFIX = "_loop"
 
 
-class OBJECT_OT_isoform_compare(bpy.types.Operator, CompareSettings, SmoothSettings, JobOperator):
+class OBJECT_OT_isoform_compare(bpy.types.Operator, CompareSettings, SmoothSettings, MeshJobOperator):
     """Measure the side-vertex surface of the active mesh against its Loop limit surface, shown as a second object"""
     bl_idname = "object.isoform_compare"
     bl_label = "Compare with Subdivision"
@@ -29,24 +29,9 @@ class OBJECT_OT_isoform_compare(bpy.types.Operator, CompareSettings, SmoothSetti
 
     _SHARED = CompareSettings._SHARED + ("normal_source",)
 
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        return obj is not None and obj.type == 'MESH' and context.mode == 'OBJECT'
-
     def draw(self, context):
         self.draw_compare_settings(self.layout)
         self.layout.prop(self, "normal_source")
-
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
 
     def prepare(self, context):
         from . import mesh_build
@@ -54,10 +39,7 @@ class OBJECT_OT_isoform_compare(bpy.types.Operator, CompareSettings, SmoothSetti
         if len(obj.data.polygons) == 0:
             raise UserError(f"{obj.name}: the mesh has no faces; nothing to compare")
         world, triangles, matrix = mesh_build.world_triangles(obj)
-        normals = None
-        if self.normal_source == 'MESH':
-            local = mesh_build.vertex_normals(obj.data).astype(np.float64)
-            normals = local @ np.linalg.inv(matrix[:3, :3])
+        normals = mesh_build.world_normals(obj, matrix) if self.normal_source == 'MESH' else None
         self._source_name = obj.name
         self._matrix = matrix
         arguments = dict(self.compare_arguments(), input_name=obj.name)

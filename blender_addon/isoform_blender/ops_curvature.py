@@ -17,7 +17,7 @@ chosen quantity, made the active colour (Solid > Attribute shows it).
 import bpy
 import numpy as np
 
-from .jobs import JobOperator, UserError
+from .jobs import MeshJobOperator, UserError
 from .settings import CurvatureSettings
 
 QUANTITIES = ("k1", "k2", "mean", "gauss", "absolute")
@@ -27,29 +27,14 @@ _FLAG_NAMES = ("boundary", "widened", "lower_order", "nonmanifold", "isolated", 
                "normal_repaired")
 
 
-class OBJECT_OT_isoform_curvature(bpy.types.Operator, CurvatureSettings, JobOperator):
+class OBJECT_OT_isoform_curvature(bpy.types.Operator, CurvatureSettings, MeshJobOperator):
     """Principal curvatures of the active mesh (Hamann 1991, Section 4.2) as point attributes"""
     bl_idname = "object.isoform_curvature"
     bl_label = "Curvature"
     bl_options = {'REGISTER', 'UNDO'}
 
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        return obj is not None and obj.type == 'MESH' and context.mode == 'OBJECT'
-
     def draw(self, context):
         self.draw_curvature_settings(self.layout)
-
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
 
     def prepare(self, context):
         from . import mesh_build

@@ -30,10 +30,6 @@ class IMPORT_SCENE_OT_isoform_vdb(bpy.types.Operator, ImportHelper, ContourSetti
             return self.execute(context)
         return ImportHelper.invoke(self, context, event)
 
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
-
     def prepare(self, context):
         from . import native
         path = bpy.path.abspath(self.filepath)

@@ -8,36 +8,21 @@ its transform, modifiers and material slots. Undo restores the old mesh.
 """
 import bpy
 
-from .jobs import JobOperator, UserError
+from .jobs import MeshJobOperator, UserError
 from .settings import ReduceSettings
 
 _STOP_REASONS = ("target reached", "nothing more removable", "tolerance reached",
                  "graph RMS tolerance reached")
 
 
-class OBJECT_OT_isoform_reduce(bpy.types.Operator, ReduceSettings, JobOperator):
+class OBJECT_OT_isoform_reduce(bpy.types.Operator, ReduceSettings, MeshJobOperator):
     """Remove triangles where the active mesh is flat, keep them where it bends (Hamann 1991, Chapter 5)"""
     bl_idname = "object.isoform_reduce"
     bl_label = "Reduce"
     bl_options = {'REGISTER', 'UNDO'}
 
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        return obj is not None and obj.type == 'MESH' and context.mode == 'OBJECT'
-
     def draw(self, context):
         self.draw_reduce_settings(self.layout)
-
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
 
     def prepare(self, context):
         from . import mesh_build

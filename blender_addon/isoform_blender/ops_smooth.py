@@ -7,35 +7,19 @@ with its normals there, tessellated at a level as a new object beside it
 comes back into object space, its vertex normals the surface's exact ones.
 """
 import bpy
-import numpy as np
 
-from .jobs import JobOperator, UserError
+from .jobs import MeshJobOperator, UserError
 from .settings import SmoothSettings
 
 
-class OBJECT_OT_isoform_smooth(bpy.types.Operator, SmoothSettings, JobOperator):
+class OBJECT_OT_isoform_smooth(bpy.types.Operator, SmoothSettings, MeshJobOperator):
     """The side-vertex surface through the active mesh's vertices and normals (Hamann 1991, Chapter 6) as a new object"""
     bl_idname = "object.isoform_smooth"
     bl_label = "Smooth Surface"
     bl_options = {'REGISTER', 'UNDO'}
 
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        return obj is not None and obj.type == 'MESH' and context.mode == 'OBJECT'
-
     def draw(self, context):
         self.draw_smooth_settings(self.layout)
-
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
 
     def prepare(self, context):
         from . import mesh_build
@@ -43,10 +27,7 @@ class OBJECT_OT_isoform_smooth(bpy.types.Operator, SmoothSettings, JobOperator):
         if len(obj.data.polygons) == 0:
             raise UserError(f"{obj.name}: the mesh has no faces; it carries no surface")
         world, triangles, matrix = mesh_build.world_triangles(obj)
-        normals = None
-        if self.normal_source == 'MESH':
-            local = mesh_build.vertex_normals(obj.data).astype(np.float64)
-            normals = local @ np.linalg.inv(matrix[:3, :3])
+        normals = mesh_build.world_normals(obj, matrix) if self.normal_source == 'MESH' else None
         self._source_name = obj.name
         self._object_name = f"{obj.name}_smooth"
         self._matrix = matrix

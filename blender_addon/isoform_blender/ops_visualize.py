@@ -38,15 +38,6 @@ class _VolumeVisual(JobOperator):
         obj = context.active_object
         return obj is not None and obj.type == 'VOLUME'
 
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        return self.run(context)
-
     def prepare(self, context):
         from . import volume_source
         obj = context.active_object

@@ -21,16 +21,6 @@ class OBJECT_OT_isoform_contour(bpy.types.Operator, ContourSettings, JobOperator
     def draw(self, context):
         self.draw_settings(self.layout)
 
-    # NOTE: Blender calls invoke() only with a window; in background mode
-    # INVOKE_DEFAULT goes straight to execute(), which then runs synchronously.
-    def invoke(self, context, event):
-        self.mark_interactive()
-        return self.execute(context)
-
-    def execute(self, context):
-        self.copy_unset_from(context)
-        return self.run(context)
-
     def prepare(self, context):
         from . import native, volume_source
         obj = context.active_object
