@@ -72,6 +72,11 @@ class BrickSource {
   // background included). Thread-safe like fill().
   virtual void fill_region(const Index3& lo, const Index3& dims, float outside,
                            std::vector<float>& out) const;
+  // False only when no cell of brick `index` can cross `isovalue`: every
+  // corner sample of its cells (origin .. origin + cells) is >= isovalue, or
+  // every one is below it. A source that knows value ranges says so without
+  // filling the brick; true when unsure (the default). Thread-safe.
+  virtual bool may_cross(size_t /*index*/, double /*isovalue*/) const { return true; }
 };
 
 enum class GridClass { Other = 0, LevelSet = 1, Fog = 2 };

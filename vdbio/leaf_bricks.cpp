@@ -1,6 +1,9 @@
 // Bricks over an OpenVDB float tree: candidate blocks and their samples.
 #include "leaf_bricks.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace isoform::vdbio {
@@ -66,10 +69,69 @@ struct Block {
   float constant = 0.0f;
 };
 
+// Per origin: the value range of its block alone (a leaf's buffer, or the
+// one tile or background value of a block without a leaf).
+void block_ranges(const Tree& tree, const std::vector<Coord>& origins, std::vector<float>& lo,
+                  std::vector<float>& hi) {
+  lo.resize(origins.size());
+  hi.resize(origins.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+    openvdb::tree::ValueAccessor<const Tree, false> access(tree);
+    for (size_t b = r.begin(); b != r.end(); ++b) {
+      if (const Leaf* leaf = access.probeConstLeaf(origins[b])) {
+        const float* v = leaf->buffer().data();
+        float a = v[0], z = v[0];
+        for (size_t m = 1; m < Leaf::SIZE; ++m) {
+          a = std::min(a, v[m]);
+          z = std::max(z, v[m]);
+        }
+        lo[b] = a;
+        hi[b] = z;
+      } else {
+        lo[b] = hi[b] = access.getValue(origins[b]);
+      }
+    }
+  });
+}
+
+// Per brick: the range over its block and the 7 above it, which hold all
+// its corner samples. Every leaf is an origin (candidate_origins), so a
+// block that is not one lies in one tile or the background.
+void corner_ranges(const Tree& tree, const std::vector<Coord>& origins, std::vector<float>& lo,
+                   std::vector<float>& hi) {
+  std::vector<float> own_lo, own_hi;
+  block_ranges(tree, origins, own_lo, own_hi);
+  lo.resize(origins.size());
+  hi.resize(origins.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+    openvdb::tree::ValueAccessor<const Tree, false> access(tree);
+    for (size_t b = r.begin(); b != r.end(); ++b) {
+      float a = own_lo[b], z = own_hi[b];
+      for (int c = 1; c < 8; ++c) {
+        const Coord at = origins[b].offsetBy((c & 1) * kBlock, ((c >> 1) & 1) * kBlock, (c >> 2) * kBlock);
+        const auto it = std::lower_bound(origins.begin() + std::ptrdiff_t(b), origins.end(), at);
+        if (it != origins.end() && *it == at) {
+          const size_t o = size_t(it - origins.begin());
+          a = std::min(a, own_lo[o]);
+          z = std::max(z, own_hi[o]);
+        } else {
+          const float v = access.getValue(at);
+          a = std::min(a, v);
+          z = std::max(z, v);
+        }
+      }
+      lo[b] = a;
+      hi[b] = z;
+    }
+  });
+}
+
 }  // namespace
 
 LeafBricks::LeafBricks(openvdb::FloatGrid::ConstPtr grid)
-    : grid_(std::move(grid)), origins_(candidate_origins(grid_->tree())) {}
+    : grid_(std::move(grid)), origins_(candidate_origins(grid_->tree())) {
+  corner_ranges(grid_->tree(), origins_, corner_min_, corner_max_);
+}
 
 void LeafBricks::fill(size_t index, Brick& out) const {
   const Coord origin = origins_[index];

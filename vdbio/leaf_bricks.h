@@ -36,6 +36,13 @@ class LeafBricks : public BrickSource {
   void fill_region(const Index3& lo, const Index3& dims, float outside,
                    std::vector<float>& out) const override;
 
+  // From the value ranges of the 8 blocks that hold the brick's corner
+  // samples (the brick's block and the 7 above it), found once by the
+  // constructor: false when all of them lie on one side of the isovalue.
+  bool may_cross(size_t index, double isovalue) const override {
+    return double(corner_min_[index]) < isovalue && double(corner_max_[index]) >= isovalue;
+  }
+
   const openvdb::FloatGrid::ConstPtr& grid() const { return grid_; }
   // Brick origins (the first cell of each), sorted and unique.
   const std::vector<openvdb::Coord>& origins() const { return origins_; }
@@ -43,6 +50,8 @@ class LeafBricks : public BrickSource {
  private:
   openvdb::FloatGrid::ConstPtr grid_;
   std::vector<openvdb::Coord> origins_;
+  // Per brick: the smallest and largest value its corner samples can take.
+  std::vector<float> corner_min_, corner_max_;
 };
 
 }  // namespace isoform::vdbio

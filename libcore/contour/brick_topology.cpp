@@ -20,7 +20,9 @@ int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared
   size_t size = 16;
   while (size < 3 * nt) size *= 2;
   const int shift = 64 - __builtin_ctzll(size);
-  table_.assign(size, Slot{kEmpty, -1, -1, 0});
+  // The table stays empty between calls: only the slots used are cleared.
+  if (table_.size() < size) table_.assign(size, Slot{kEmpty, -1, -1});
+  used_.clear();
   for (size_t at = 0; at < 3 * nt; ++at) {
     const size_t t = at / 3;
     const int32_t a = tris[at], b = tris[3 * t + size_t(next(int(at - 3 * t)))];
@@ -35,10 +37,10 @@ int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared
     while (table_[h].key != kEmpty && table_[h].key != key) h = (h + 1) & (size - 1);
     Slot& slot = table_[h];
     if (slot.key == kEmpty) {
-      slot = Slot{key, int32_t(at), -1, 1};
+      slot = Slot{key, int32_t(at), -1};
+      used_.push_back(uint32_t(h));
     } else {
-      if (slot.count == 1) slot.second = int32_t(at);
-      ++slot.count;
+      slot.second = slot.second == -1 ? int32_t(at) : kMore;
     }
   }
   root_.resize(nt);
@@ -51,12 +53,12 @@ int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared
     const int32_t t = e / 3;
     return tris[e] < tris[3 * t + next(e - 3 * t)];
   };
-  for (const Slot& slot : table_) {
-    if (slot.key == kEmpty) continue;
+  for (uint32_t h : used_) {
+    Slot& slot = table_[h];
     ++counts.edges;
-    if (slot.count == 1) {
+    if (slot.second == -1) {
       ++counts.boundary;
-    } else if (slot.count == 2) {
+    } else if (slot.second >= 0) {
       const int32_t t = slot.first / 3, u = slot.second / 3;
       neighbours[size_t(slot.first)] = int32_t(first_triangle) + u;
       neighbours[size_t(slot.second)] = int32_t(first_triangle) + t;
@@ -66,6 +68,7 @@ int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared
     } else {
       ++counts.nonmanifold;
     }
+    slot = Slot{kEmpty, -1, -1};
   }
   total.add(counts);
   // Roots are the smallest triangle of their part: number them in order.

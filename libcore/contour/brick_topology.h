@@ -54,14 +54,17 @@ class BrickTopology {
               std::vector<SeamEdge>& seams);
 
  private:
-  // One undirected local edge: its first two triangle edges and how many.
+  // One undirected local edge: its first two triangle edges; second is -1
+  // while it has one, kMore once it has more than two.
   struct Slot {
     uint64_t key;  // (smaller local vertex << 32) | larger; kEmpty if unused
-    int32_t first, second, count;
+    int32_t first, second;
   };
   static constexpr uint64_t kEmpty = ~uint64_t(0);
+  static constexpr int32_t kMore = -2;
 
-  std::vector<Slot> table_;  // open addressing, a power of two long
+  std::vector<Slot> table_;     // open addressing, a power of two long, kEmpty between calls
+  std::vector<uint32_t> used_;  // the slots this brick filled, in order
   std::vector<int32_t> root_;
 };
 

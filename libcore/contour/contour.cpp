@@ -37,6 +37,7 @@ void contour_bricks(const ScalarGrid& grid, double iso, ContourMethod method, co
     Scratch& s = scratch.local();
     BrickStores& store = tables.stores.local();
     for (size_t b = r.begin(); b != r.end(); ++b) {
+      if (!source.may_cross(b, iso)) continue;
       source.fill(b, s.brick);
       s.contourer.run(s.brick, all[b], store);
     }

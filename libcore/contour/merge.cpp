@@ -121,16 +121,18 @@ bool degenerate(const int32_t* tri, const float* vertices) {
 struct Scratch {
   BrickTopology topology;
   std::vector<uint8_t> shared;
-  std::vector<int32_t> triangles;  // oriented, brick-local
+  std::vector<int32_t> triangles;  // reversed brick-local triangles, when asked
   std::vector<SeamEdge> seams;
   TopologyCounts counts;
   bool missing_normal = false;
 };
 
-void oriented_triangles(const BrickMesh& bm, bool reverse, std::vector<int32_t>& out) {
+// The brick's triangles, oriented: its own table, or a reversed copy in out.
+const int32_t* oriented_triangles(const BrickMesh& bm, bool reverse, std::vector<int32_t>& out) {
+  if (!reverse) return bm.triangles;
   out.assign(bm.triangles, bm.triangles + 3 * size_t(bm.triangle_count));
-  if (reverse)
-    for (size_t t = 0; t < bm.triangle_count; ++t) std::swap(out[3 * t + 1], out[3 * t + 2]);
+  for (size_t t = 0; t < bm.triangle_count; ++t) std::swap(out[3 * t + 1], out[3 * t + 2]);
+  return out.data();
 }
 
 // Brick b's kept vertices and its triangles, written into mesh at the
@@ -151,10 +153,10 @@ void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTa
       mesh.normals[3 * size_t(f) + a] = len > 0 ? sign * float(g[a] / len) : 0.0f;
     }
   }
-  oriented_triangles(bm, orient.reverse, s.triangles);
+  const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
   for (size_t t = 0; t < bm.triangle_count; ++t) {
-    const int32_t* tri = &s.triangles[3 * t];
+    const int32_t* tri = &tris[3 * t];
     s.counts.degenerate += degenerate(tri, bm.vertices);
     for (int m = 0; m < 3; ++m) mesh.triangles[3 * (t0 + t) + size_t(m)] = fin[tri[m]];
   }
@@ -165,9 +167,9 @@ void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const Verte
                     const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, Scratch& s) {
   s.shared.assign(bm.vertex_count, 0);
   for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
-  oriented_triangles(bm, orient.reverse, s.triangles);
+  const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
-  part_counts[b] = s.topology.run(s.triangles.data(), bm.triangle_count, s.shared.data(),
+  part_counts[b] = s.topology.run(tris, bm.triangle_count, s.shared.data(),
                                   vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
                                   &mesh.parts[t0], s.counts, s.seams);
 }

@@ -83,12 +83,44 @@ void expect_crossings_covered(const LeafBricks& bricks, float iso) {
   EXPECT_EQ(missed, 0u) << "of " << crossings << " crossing cells";
 }
 
+// may_cross is false only for bricks whose corner samples (0 .. 8 on each
+// axis) all lie on one side of iso; returns how many bricks it rules out.
+size_t expect_may_cross_keeps_crossings(const LeafBricks& bricks, double iso) {
+  Brick brick;
+  size_t ruled_out = 0, wrong = 0;
+  for (size_t b = 0; b < bricks.brick_count(); ++b) {
+    bricks.fill(b, brick);
+    bool above = false, below = false;
+    for (int k = 0; k <= 8; ++k)
+      for (int j = 0; j <= 8; ++j)
+        for (int i = 0; i <= 8; ++i) (double(brick.value(i, j, k)) >= iso ? above : below) = true;
+    if (bricks.may_cross(b, iso)) continue;
+    ++ruled_out;
+    wrong += above && below;
+  }
+  EXPECT_EQ(wrong, 0u) << "crossing bricks ruled out at " << iso;
+  return ruled_out;
+}
+
 TEST(LeafBricksRealData, SphereSamplesAndCoverage) {
   const LeafBricks bricks(read_float_grid("sphere.vdb"));
   std::cout << "sphere.vdb: " << bricks.brick_count() << " bricks for "
             << bricks.grid()->tree().leafCount() << " leaves\n";
   expect_samples_match_tree(bricks);
   expect_crossings_covered(bricks, 0.0f);
+}
+
+// The narrow band's leaves reach past the surface on both sides: many
+// bricks lie wholly inside or outside and are ruled out before filling.
+TEST(LeafBricksRealData, MayCrossRulesOutOnlyBricksThatDoNotCross) {
+  const LeafBricks sphere(read_float_grid("sphere.vdb"));
+  const size_t out = expect_may_cross_keeps_crossings(sphere, 0.0);
+  std::cout << "sphere.vdb: " << out << " of " << sphere.brick_count() << " bricks ruled out at 0\n";
+  EXPECT_GT(out, sphere.brick_count() / 10);
+  // Beyond the value range every brick is ruled out.
+  EXPECT_EQ(expect_may_cross_keeps_crossings(sphere, 1e6), sphere.brick_count());
+  const LeafBricks smoke(read_float_grid("smoke.vdb"));
+  EXPECT_GT(expect_may_cross_keeps_crossings(smoke, 0.5), 0u);
 }
 
 TEST(LeafBricksRealData, SmokeSamplesAndCoverage) {
@@ -151,6 +183,9 @@ TEST(LeafBricks, TilesLeavesAndBackground) {
   const LeafBricks bricks(grid);
   expect_samples_match_tree(bricks);
   expect_crossings_covered(bricks, 0.5f);
+  // Bricks inside the tiles, from tile values alone, and near the lone voxel.
+  EXPECT_GT(expect_may_cross_keeps_crossings(bricks, 0.5), 0u);
+  expect_may_cross_keeps_crossings(bricks, 2.0);
 }
 
 TEST(LeafBricks, NoCandidatesFromInactiveTiles) {
