@@ -53,7 +53,9 @@ Command add_reduce_command(CLI::App& parent) {
       "Removes the triangle of least weight (angle weight times the absolute curvature at its "
       "vertices) again and again, replacing it by one point fitted to its neighbourhood, until "
       "--keep of the triangles remain or --tolerance would be exceeded. Curvature is computed "
-      "first when the file has none. The mesh must be manifold and consistently oriented. "
+      "first when the file has none. The mesh must be manifold, consistently oriented, with "
+      "finite coordinates and not overlap itself (else the first offender is named), unless "
+      "--manifold-parts. "
       "Example: isoform reduce skull.ply --keep 10% -o small.ply");
   app->add_option("file", args->input, "Mesh file (.ply, .obj, .stl)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")->required();
@@ -71,6 +73,10 @@ Command add_reduce_command(CLI::App& parent) {
                 "Keep each new point on its fitted surface, as the seed does, instead of moving it "
                 "to the least-squares best place for the original vertices: for surfaces that "
                 "interpolate the vertices (isoform patch)");
+  app->add_flag("--manifold-parts", args->settings.manifold_parts,
+                "Instead of failing on bad input, reduce only the parts (triangles joined by edges) that "
+                "pass every check and copy the others unchanged; --keep then counts the reduced parts' "
+                "triangles. The summary says which parts were left alone and why");
   add_progress_flags(*app, args->progress);
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args] { run_reduce(*args); }};

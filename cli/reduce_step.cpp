@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,16 @@ isoform_reduce_stats stats_of(const isoform_mesh* mesh) {
   isoform_reduce_stats s;
   check(isoform_mesh_reduce_stats(mesh, &s));
   return s;
+}
+
+// Why each part was left alone (manifold parts only), one line each.
+std::vector<std::string> left_alone(const isoform_mesh* mesh, const isoform_reduce_stats& s) {
+  std::vector<std::string> lines;
+  for (long long i = 0; i < s.parts_left_alone; ++i) {
+    const char* why = isoform_mesh_reduce_left_alone(mesh, i);
+    lines.push_back(why ? why : "");
+  }
+  return lines;
 }
 
 }  // namespace
@@ -44,11 +56,14 @@ double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& s, const std::strin
   o.refine_point = s.refine_point ? 1 : 0;
   o.point_method = s.point == "quadric" ? ISOFORM_REDUCE_POINT_QUADRIC : ISOFORM_REDUCE_POINT_QUADRATIC;
   o.measure_error = 1;
+  o.manifold_parts_only = s.manifold_parts ? 1 : 0;
   const auto start = std::chrono::steady_clock::now();
   try {
     run_with_progress([&](isoform_progress* p) { return isoform_reduce(mesh, &o, p); }, progress);
   } catch (const Failure& failure) {
-    throw Failure(input + ": " + failure.what(), failure.exit_code());
+    const std::string message = failure.what(), library = "reduce: ";
+    const bool named = message.compare(0, library.size(), library) == 0;
+    throw Failure(input + ": " + (named ? message.substr(library.size()) : message), failure.exit_code());
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -73,6 +88,9 @@ Json reduce_json(const isoform_mesh* mesh, double seconds) {
                 {"nonmanifold", s.refused_nonmanifold},
                 {"boundary", s.refused_boundary},
                 {"tolerance", s.refused_tolerance}}},
+              {"parts_left_alone", s.parts_left_alone},
+              {"triangles_left_alone", s.triangles_left_alone},
+              {"left_alone", left_alone(mesh, s)},
               {"reduce_seconds", seconds}};
 }
 
@@ -81,6 +99,11 @@ void print_reduce(std::ostream& out, const isoform_mesh* mesh, double seconds) {
   print_row(out, "triangles", std::to_string(s.triangles_before) + " -> " + std::to_string(s.triangles_after));
   print_row(out, "vertices", std::to_string(s.vertices_before) + " -> " + std::to_string(s.vertices_after));
   print_row(out, "passes", std::to_string(s.passes) + " (" + kStopReasons[s.stop_reason & 3] + ")");
+  if (s.parts_left_alone > 0) {
+    print_row(out, "left alone", std::to_string(s.parts_left_alone) + " part(s), " +
+                                     std::to_string(s.triangles_left_alone) + " triangle(s), unchanged");
+    for (const std::string& why : left_alone(mesh, s)) out << "  " << why << '\n';
+  }
   print_row(out, "max vertex distance", format_number(s.max_distance));
   print_row(out, "reduce time", format_seconds(seconds));
 }

@@ -17,13 +17,15 @@ struct ReduceSettings {
   bool lock_boundary = false;
   std::string point = "quadratic";  // quadratic | quadric
   bool refine_point = true;          // false: the seed's point on the fitted surface
+  bool manifold_parts = false;       // reduce the parts that pass the checks, copy the others
 };
 
 // "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.
 double parse_fraction(const std::string& text, const std::string& flag);
 
 // Runs isoform_reduce on mesh (the error measured as well) and returns the
-// seconds it took. Failures name `input`.
+// seconds it took. Failures name `input` (in place of the library's
+// "reduce: ").
 double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& settings, const std::string& input,
                    const ProgressOptions& progress);
 

@@ -772,6 +772,11 @@ typedef struct isoform_reduce_options {
   int vertex_fallback;   /* 1 (default): beyond the seed, when the fitted point fails the
                             half-plane test or a guard on a closed corona, try T's vertices in
                             its place (nearest first); 0: refuse as the seed does */
+  int manifold_parts_only; /* 1: instead of failing on bad input, reduce the parts (triangles
+                            joined by shared edges) that pass every check of isoform_reduce and
+                            copy the others unchanged; keep_fraction then applies to the
+                            reducible parts' triangles (isoform_mesh_reduce_left_alone says
+                            why each other part was left); default 0 */
 } isoform_reduce_options;
 
 ISOFORM_API void isoform_reduce_options_default(isoform_reduce_options* options);
@@ -797,6 +802,8 @@ typedef struct isoform_reduce_stats {
   long long refused_nonmanifold; /* an edge of three triangles or a duplicate triangle */
   long long refused_boundary;    /* boundary locked, or (graph) the domain would shrink */
   long long refused_tolerance;   /* a tolerance would be exceeded */
+  long long parts_left_alone;    /* manifold_parts_only: parts copied unchanged (else 0) */
+  long long triangles_left_alone;/* the triangles of those parts */
 } isoform_reduce_stats;
 
 /* Reduces mesh in place by iterative triangle removal (Chapter 5): the
@@ -806,15 +813,24 @@ typedef struct isoform_reduce_stats {
  * (isoform_curvature's defaults) when the mesh has none. Keeps the Euler
  * characteristic, genus and parts; recomputes neighbours, parts and stats;
  * drops colours and loose edges. A non-manifold or inconsistently oriented
- * mesh, or NaN coordinates, give ISOFORM_ERR_INVALID_ARGUMENT naming the
- * first offending edge or vertex; on any failure or cancel the mesh is
- * unchanged. About O(n log n); options and progress may be NULL. */
+ * mesh, NaN coordinates, a triangle using a vertex twice, or two triangles
+ * that intersect beyond the vertices they share give
+ * ISOFORM_ERR_INVALID_ARGUMENT naming the first offending edge, vertex or
+ * triangles (unless manifold_parts_only); on any failure or cancel the mesh
+ * is unchanged. About O(n log n); options and progress may be NULL. */
 ISOFORM_API isoform_status isoform_reduce(isoform_mesh* mesh, const isoform_reduce_options* options,
                                           isoform_progress* progress);
 
 /* The stats of the last isoform_reduce on mesh; ISOFORM_ERR_INVALID_ARGUMENT
  * when it was never reduced. */
 ISOFORM_API isoform_status isoform_mesh_reduce_stats(const isoform_mesh* mesh, isoform_reduce_stats* out);
+
+/* Why part index (0 to parts_left_alone - 1) was left alone by the last
+ * isoform_reduce with manifold_parts_only: "part of N triangles from
+ * triangle T: <its first problem>", triangle numbers of the input. Valid
+ * until the mesh is next reduced or freed; NULL when index is out of range
+ * or mesh is NULL. */
+ISOFORM_API const char* isoform_mesh_reduce_left_alone(const isoform_mesh* mesh, long long index);
 
 /* ------------------------------------------------------------------ */
 /* Side-vertex surfaces (Hamann 1991, Chapter 6)                      */

@@ -174,6 +174,7 @@ class ReduceOptions(ctypes.Structure):
         ("measure_error", ctypes.c_int),
         ("refine_point", ctypes.c_int),
         ("vertex_fallback", ctypes.c_int),
+        ("manifold_parts_only", ctypes.c_int),
     ]
 
 
@@ -198,6 +199,8 @@ class ReduceStats(ctypes.Structure):
         ("refused_nonmanifold", c_long_long),
         ("refused_boundary", c_long_long),
         ("refused_tolerance", c_long_long),
+        ("parts_left_alone", c_long_long),
+        ("triangles_left_alone", c_long_long),
     ]
 
 

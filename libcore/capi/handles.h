@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "../isoform.h"
 #include "../mesh.h"
@@ -31,6 +32,7 @@ struct isoform_mesh {
   // The report of the last isoform_reduce (reduced false until then).
   bool reduced = false;
   isoform_reduce_stats reduce_stats{};
+  std::vector<std::string> reduce_left_alone;  // manifold_parts_only: why, per part
 };
 
 namespace isoform::capi {

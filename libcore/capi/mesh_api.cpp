@@ -33,8 +33,9 @@ void finish(isoform::Mesh& m, const std::string& what) {
       throw isoform::InvalidArgument(what + ": triangle " + std::to_string(i / 3) + " refers to vertex " +
                                      std::to_string(m.triangles[i]) + " but there are " + std::to_string(n) +
                                      " vertices");
-  for (float c : m.points)
-    if (!std::isfinite(c)) throw isoform::FormatError(what + ": a vertex coordinate is NaN or infinite");
+  for (size_t i = 0; i < m.points.size(); ++i)
+    if (!std::isfinite(m.points[i]))
+      throw isoform::FormatError(what + ": vertex " + std::to_string(i / 3) + " has a coordinate that is NaN or infinite");
   isoform::compute_topology(m);
   if (m.normals.size() != m.points.size()) isoform::estimate_normals(m);
 }
@@ -62,8 +63,10 @@ isoform_status mesh_from_arrays(const Real* points, size_t n, const int32_t* tri
     mesh->mesh.points.assign(points, points + 3 * n);
     if (sizeof(Real) == sizeof(double)) {
       mesh->mesh.precise_points.assign(points, points + 3 * n);
-      for (double c : mesh->mesh.precise_points)
-        if (!std::isfinite(c)) throw isoform::FormatError(std::string(what) + ": a vertex coordinate is NaN or infinite");
+      for (size_t i = 0; i < mesh->mesh.precise_points.size(); ++i)
+        if (!std::isfinite(mesh->mesh.precise_points[i]))
+          throw isoform::FormatError(std::string(what) + ": vertex " + std::to_string(i / 3) +
+                                     " has a coordinate that is NaN or infinite");
     }
     mesh->mesh.triangles.assign(triangles, triangles + 3 * m);
     finish(mesh->mesh, what);

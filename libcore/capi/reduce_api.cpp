@@ -25,6 +25,7 @@ isoform::ReduceOptions to_options(const isoform_reduce_options& o) {
   r.measure_error = o.measure_error != 0;
   r.refine_point = o.refine_point != 0;
   r.vertex_fallback = o.vertex_fallback != 0;
+  r.manifold_parts_only = o.manifold_parts_only != 0;
   return r;
 }
 
@@ -49,6 +50,8 @@ isoform_reduce_stats to_stats(const isoform::ReduceStats& s) {
   o.refused_nonmanifold = s.refused.nonmanifold;
   o.refused_boundary = s.refused.boundary;
   o.refused_tolerance = s.refused.tolerance;
+  o.parts_left_alone = s.parts_left_alone;
+  o.triangles_left_alone = s.triangles_left_alone;
   return o;
 }
 
@@ -76,9 +79,10 @@ isoform_status isoform_reduce(isoform_mesh* mesh, const isoform_reduce_options* 
     const isoform::ReduceOptions r = to_options(o);
     const isoform::Progress p(progress);
     // reduce_mesh leaves the mesh as it was when it throws.
-    const isoform::ReduceStats s = isoform::reduce_mesh(mesh->mesh, r, p);
+    isoform::ReduceStats s = isoform::reduce_mesh(mesh->mesh, r, p);
     mesh->reduced = true;
     mesh->reduce_stats = to_stats(s);
+    mesh->reduce_left_alone = std::move(s.left_alone);
     p.stage(ISOFORM_STAGE_DONE);
     return ISOFORM_OK;
   });
@@ -92,6 +96,11 @@ isoform_status isoform_mesh_reduce_stats(const isoform_mesh* mesh, isoform_reduc
     *out = mesh->reduce_stats;
     return ISOFORM_OK;
   });
+}
+
+const char* isoform_mesh_reduce_left_alone(const isoform_mesh* mesh, long long index) {
+  if (!mesh || index < 0 || index >= (long long)mesh->reduce_left_alone.size()) return nullptr;
+  return mesh->reduce_left_alone[size_t(index)].c_str();
 }
 
 }  // extern "C"

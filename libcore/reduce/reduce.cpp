@@ -20,6 +20,7 @@
 #include "../curvature/surface_curvature.h"
 #include "../errors.h"
 #include "../mesh_normals.h"
+#include "manifold_parts.h"
 #include "removal.h"
 #include "validate.h"
 #include "weights.h"
@@ -144,6 +145,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
 
 ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress& progress) {
   check_options(options);
+  if (options.manifold_parts_only) return reduce::reduce_manifold_parts(mesh, options, progress);
   reduce::validate_input(mesh, "reduce");
   ReduceStats stats;
   stats.triangles_before = stats.triangles_after = (long long)mesh.triangle_count();

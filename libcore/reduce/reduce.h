@@ -6,6 +6,9 @@
 // boundary polygon (5.40) and improved by diagonal swaps (Definition 5.15).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "../mesh.h"
 #include "../progress.h"
 
@@ -35,6 +38,9 @@ struct ReduceOptions {
   // Beyond the seed: when the fitted point fails the half-plane test or a
   // guard on a closed corona, try T's vertices in its place.
   bool vertex_fallback = true;
+  // Beyond the seed: reduce only the parts that pass every entry check and
+  // copy the others unchanged, instead of refusing the mesh (manifold_parts.h).
+  bool manifold_parts_only = false;
 };
 
 // Why a candidate triangle was not removed when its turn came.
@@ -59,11 +65,16 @@ struct ReduceStats {
   double graph_rms = 0.0;    // RMS height error at the original vertices (graph mode)
   int stop_reason = 0;       // 0 target reached, 1 nothing removable, 2 tolerance, 3 RMS tolerance
   ReduceRefusals refused;
+  // manifold_parts_only: the parts copied unchanged, their triangles, and
+  // why, one line each ("part of N triangles from triangle T: <problem>").
+  long long parts_left_alone = 0, triangles_left_alone = 0;
+  std::vector<std::string> left_alone;
 };
 
 // Reduces mesh in place. The mesh must be a manifold, consistently oriented
-// triangulation with finite coordinates (else InvalidArgument naming the
-// first offending edge, vertex or triangle). Curvature is computed first
+// triangulation with finite coordinates that does not overlap itself (else
+// InvalidArgument naming the first offending edge, vertex or triangles;
+// validate.h), unless manifold_parts_only. Curvature is computed first
 // (Chapter 4, default method) when the mesh has none. The Euler
 // characteristic, the parts and the genus are kept. On return mesh holds the
 // reduced points, normals, triangles, neighbours, parts and per-vertex

@@ -4,42 +4,58 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "../errors.h"
+#include "mesh_overlap.h"
 
 namespace isoform::reduce {
 namespace {
 
-[[noreturn]] void refuse(const std::string& what, const std::string& problem) {
-  throw InvalidArgument(what + ": " + problem);
+using Sink = std::function<bool(const Offence&)>;
+
+void check_indices(const Mesh& mesh, const std::string& what) {
+  const long long nv = (long long)mesh.vertex_count();
+  for (size_t t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t v = mesh.triangles[3 * t + size_t(k)];
+      if (v < 0 || v >= nv)
+        throw InvalidArgument(what + ": triangle " + std::to_string(t) + " names vertex " + std::to_string(v) +
+                              ", which does not exist");
+    }
 }
 
-void check_points(const Mesh& mesh, const std::string& what) {
+bool check_points(const Mesh& mesh, const Sink& sink) {
   const size_t nv = mesh.vertex_count();
   const bool precise = mesh.precise_points.size() == 3 * nv;
-  for (size_t i = 0; i < 3 * nv; ++i) {
-    const double x = precise ? mesh.precise_points[i] : double(mesh.points[i]);
-    if (!std::isfinite(x))
-      refuse(what, "vertex " + std::to_string(i / 3) + " has a coordinate that is not finite (NaN or infinity)");
-  }
+  for (size_t v = 0; v < nv; ++v)
+    for (size_t k = 0; k < 3; ++k) {
+      const double x = precise ? mesh.precise_points[3 * v + k] : double(mesh.points[3 * v + k]);
+      if (std::isfinite(x)) continue;
+      Offence o;
+      o.problem = "vertex " + std::to_string(v) + " has a coordinate that is not finite (NaN or infinity)";
+      o.vertex = int32_t(v);
+      if (!sink(o)) return false;
+      break;
+    }
+  return true;
 }
 
-void check_triangles(const Mesh& mesh, const std::string& what) {
-  const long long nv = (long long)mesh.vertex_count();
+bool check_triangles(const Mesh& mesh, const Sink& sink) {
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     const int32_t* v = &mesh.triangles[3 * t];
-    for (int k = 0; k < 3; ++k)
-      if (v[k] < 0 || v[k] >= nv)
-        refuse(what, "triangle " + std::to_string(t) + " names vertex " + std::to_string(v[k]) +
-                         ", which does not exist");
-    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
-      refuse(what, "triangle " + std::to_string(t) + " uses a vertex twice (" + std::to_string(v[0]) + ", " +
-                       std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")");
+    if (v[0] != v[1] && v[1] != v[2] && v[2] != v[0]) continue;
+    Offence o;
+    o.problem = "triangle " + std::to_string(t) + " uses a vertex twice (" + std::to_string(v[0]) + ", " +
+                std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
+    o.triangle = int32_t(t);
+    if (!sink(o)) return false;
   }
+  return true;
 }
 
 // Every undirected edge in at most two triangles, in opposite directions.
-void check_edges(const Mesh& mesh, const std::string& what) {
+bool check_edges(const Mesh& mesh, const Sink& sink) {
   struct Edge {
     int32_t lo, hi;
     int32_t forward;  // 1 when used as lo -> hi
@@ -59,18 +75,22 @@ void check_edges(const Mesh& mesh, const std::string& what) {
     size_t j = i;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
     const std::string name = "edge (" + std::to_string(edges[i].lo) + ", " + std::to_string(edges[i].hi) + ")";
+    Offence o;
+    o.triangle = edges[i].face;
     if (j - i > 2)
-      refuse(what, "the mesh is not manifold: " + name + " is shared by " + std::to_string(j - i) + " triangles");
-    if (j - i == 2 && edges[i].forward == edges[i + 1].forward)
-      refuse(what, "the triangles are not consistently oriented: " + name + " is used in the same direction by triangles " +
-                       std::to_string(edges[i].face) + " and " + std::to_string(edges[i + 1].face));
+      o.problem = "the mesh is not manifold: " + name + " is shared by " + std::to_string(j - i) + " triangles";
+    else if (j - i == 2 && edges[i].forward == edges[i + 1].forward)
+      o.problem = "the triangles are not consistently oriented: " + name + " is used in the same direction by triangles " +
+                  std::to_string(edges[i].face) + " and " + std::to_string(edges[i + 1].face);
+    if (!o.problem.empty() && !sink(o)) return false;
     i = j;
   }
+  return true;
 }
 
 // Around each vertex the opposite edges of its triangles form one cycle or
 // one path; more than one is a non-manifold vertex (two fans meeting).
-void check_vertex_fans(const Mesh& mesh, const std::string& what) {
+bool check_vertex_fans(const Mesh& mesh, const Sink& sink) {
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   std::vector<int32_t> start(nv + 1, 0), faces(3 * nt);
   for (int32_t v : mesh.triangles) ++start[size_t(v) + 1];
@@ -104,19 +124,44 @@ void check_vertex_fans(const Mesh& mesh, const std::string& what) {
       ++visited;
       at = link[next][1];
     }
-    if (visited != link.size())
-      refuse(what, "the mesh is not manifold at vertex " + std::to_string(v) +
-                       ": its triangles form more than one fan");
+    if (visited == link.size()) continue;
+    Offence o;
+    o.problem = "the mesh is not manifold at vertex " + std::to_string(v) + ": its triangles form more than one fan";
+    o.vertex = int32_t(v);
+    if (!sink(o)) return false;
   }
+  return true;
+}
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+bool check_overlaps(const Mesh& mesh, const Sink& sink) {
+  for (const OverlapPair& p : find_overlaps(mesh)) {
+    Offence o;
+    o.problem = "the mesh overlaps itself: triangles " + std::to_string(p.a) + " and " + std::to_string(p.b) +
+                " intersect (near " + number(p.near[0]) + ", " + number(p.near[1]) + ", " + number(p.near[2]) + ")";
+    o.triangle = p.a;
+    o.other = p.b;
+    if (!sink(o)) return false;
+  }
+  return true;
 }
 
 }  // namespace
 
+void find_offences(const Mesh& mesh, const std::string& what, const Sink& sink) {
+  check_indices(mesh, what);
+  const bool go_on = check_points(mesh, sink) && check_triangles(mesh, sink) && check_edges(mesh, sink) &&
+                     check_vertex_fans(mesh, sink) && check_overlaps(mesh, sink);
+  (void)go_on;
+}
+
 void validate_input(const Mesh& mesh, const std::string& what) {
-  check_points(mesh, what);
-  check_triangles(mesh, what);
-  check_edges(mesh, what);
-  check_vertex_fans(mesh, what);
+  find_offences(mesh, what, [&](const Offence& o) -> bool { throw InvalidArgument(what + ": " + o.problem); });
 }
 
 }  // namespace isoform::reduce

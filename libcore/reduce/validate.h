@@ -1,14 +1,30 @@
 // What the reduction needs of its input, checked once at entry: finite
 // coordinates, triangles of three distinct existing vertices, every edge in
-// at most two triangles and in opposite directions when in two, and every
-// vertex's triangles forming one fan. Each failure names the first offender.
+// at most two triangles and in opposite directions when in two, every
+// vertex's triangles forming one fan, and no two triangles intersecting
+// beyond the vertices they share (mesh_overlap.h). Each failure names the
+// first offender.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "../mesh.h"
 
 namespace isoform::reduce {
+
+// One violation, and what it involves (indices into the input).
+struct Offence {
+  std::string problem;   // e.g. "the mesh is not manifold: edge (0, 1) is shared by 3 triangles"
+  int32_t triangle = -1; // a triangle it involves, or -1
+  int32_t other = -1;    // a second triangle (an overlap), or -1
+  int32_t vertex = -1;   // a vertex all of whose triangles are involved, or -1
+};
+
+// Calls sink with each violation, the checks in the order above (all of one
+// check before the next); stops when sink returns false. Throws
+// InvalidArgument "<what>: ..." for an index that names no vertex.
+void find_offences(const Mesh& mesh, const std::string& what, const std::function<bool(const Offence&)>& sink);
 
 // Throws InvalidArgument "<what>: <problem>" for the first violation.
 void validate_input(const Mesh& mesh, const std::string& what);

@@ -156,6 +156,7 @@ int main(void) {
   FIELD(isoform_reduce_options, measure_error);
   FIELD(isoform_reduce_options, refine_point);
   FIELD(isoform_reduce_options, vertex_fallback);
+  FIELD(isoform_reduce_options, manifold_parts_only);
   end();
 
   begin("isoform_reduce_stats", sizeof(isoform_reduce_stats));
@@ -177,6 +178,8 @@ int main(void) {
   FIELD(isoform_reduce_stats, refused_nonmanifold);
   FIELD(isoform_reduce_stats, refused_boundary);
   FIELD(isoform_reduce_stats, refused_tolerance);
+  FIELD(isoform_reduce_stats, parts_left_alone);
+  FIELD(isoform_reduce_stats, triangles_left_alone);
   end();
 
   begin("isoform_patch_options", sizeof(isoform_patch_options));

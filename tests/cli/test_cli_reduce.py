@@ -9,7 +9,7 @@ import sys
 from collections import Counter
 
 import test_cli as base
-from test_cli import expect, run, run_json, data, leftovers, expect_failure
+from test_cli import expect, run, run_json, data, leftovers, expect_failure, check_one_error_line, sha256
 
 
 def euler(points, faces):
@@ -151,9 +151,89 @@ def case_bad_input(tmp):
                    ["fin.obj", "nan.obj"])
 
 
+def write_obj(path, points, faces, mode="w"):
+    with open(path, mode) as f:
+        for p in points:
+            f.write("v %.9g %.9g %.9g\n" % p)
+        for a, b, c in faces:
+            f.write(f"f {a + 1} {b + 1} {c + 1}\n")
+
+
+def expect_refused(tmp, args, path, message, inputs):
+    """Exit 1, one line that starts with the file and message, no output, input untouched."""
+    digest = sha256(path)
+    proc = run(*args, code=1)
+    check_one_error_line(proc, [path])
+    expect(proc.stderr.startswith(f"isoform: error: {path}: {message}"), f"error line: {proc.stderr!r}")
+    left = leftovers(tmp, inputs)
+    expect(left == [], f"isoform {' '.join(args)} left behind {left}")
+    expect(sha256(path) == digest, f"isoform {' '.join(args)} changed its input")
+
+
+def case_overlap(tmp):
+    """Two triangles through each other: named, with where they cross."""
+    cross = os.path.join(tmp, "cross.obj")
+    write_obj(cross, [(0, 0, 0), (2, 0, 0), (0, 2, 0), (0.5, 0.5, -1), (0.5, 0.5, 1), (0.6, 0.6, 0.5)],
+              [(0, 1, 2), (3, 4, 5)])
+    out = os.path.join(tmp, "out.ply")
+    expect_refused(tmp, ["reduce", cross, "-o", out], cross,
+                   "the mesh overlaps itself: triangles 0 and 1 intersect (near 0.5, 0.5, 0)", ["cross.obj"])
+    expect_refused(tmp, ["reduce", cross, "--keep", "100%", "-o", out], cross, "the mesh overlaps itself",
+                   ["cross.obj"])
+
+
+FIN = [(5, 0, 0), (6, 0, 0), (5, 1, 0), (5, -1, 0), (5, 0, 1)]
+
+
+def case_manifold_parts(tmp):
+    """--manifold-parts: a fin beside a grid is copied and named, the grid reduced."""
+    mesh = os.path.join(tmp, "grid_fin.obj")
+    write_grid_obj(mesh, 21)  # vertices 0-440, triangles 0-799
+    v = 441
+    write_obj(mesh, FIN, [(v, v + 1, v + 2), (v + 1, v, v + 3), (v, v + 1, v + 4)], "a")
+    out = os.path.join(tmp, "out.obj")
+    expect_refused(tmp, ["reduce", mesh, "-o", out], mesh,
+                   "the mesh is not manifold: edge (441, 442) is shared by 3 triangles", ["grid_fin.obj"])
+    summary, _ = run_json("reduce", mesh, "--keep", "20%", "--manifold-parts", "-o", out)
+    reason = "part of 3 triangles from triangle 800: the mesh is not manifold: edge (441, 442) is shared by 3 triangles"
+    expect(summary["parts_left_alone"] == 1 and summary["triangles_left_alone"] == 3, f"{summary}")
+    expect(summary["left_alone"] == [reason], f"{summary['left_alone']}")
+    expect(summary["triangles_before"] == 803, f"{summary}")
+    points, _, faces = base.read_obj(out)
+    expect(len(faces) - 3 <= 160 and len(faces) - 3 > 100, f"{len(faces)} triangles: --keep counts the grid's 800")
+    fin = [tuple(points[v] for v in f) for f in faces[-3:]]
+    expect(fin == [(FIN[0], FIN[1], FIN[2]), (FIN[1], FIN[0], FIN[3]), (FIN[0], FIN[1], FIN[4])],
+           f"the fin was not copied unchanged: {fin}")
+    text = run("reduce", mesh, "--manifold-parts", "-o", out).stdout
+    expect("left alone" in text and reason in text, text)
+    expect(leftovers(tmp, ["grid_fin.obj", "out.obj"]) == [], "files left behind")
+
+
+def case_keep_all_is_bit_identical(tmp):
+    """--keep 100% writes the same file as a plain conversion would: binary PLY byte for byte."""
+    mesh = os.path.join(tmp, "sphere.ply")
+    run("contour", data("sphere.vdb"), "-o", mesh)
+    out = os.path.join(tmp, "copy.ply")
+    run("reduce", mesh, "--keep", "100%", "-o", out)
+    with open(mesh, "rb") as a, open(out, "rb") as b:
+        expect(a.read() == b.read(), "--keep 100% did not write the input's bytes")
+
+
+def case_sphere_contour_passes(tmp):
+    """A real contour does not overlap itself: sphere.vdb's reduces."""
+    mesh = os.path.join(tmp, "sphere.obj")
+    run("contour", data("sphere.vdb"), "-o", mesh)
+    out = os.path.join(tmp, "small.obj")
+    summary, _ = run_json("reduce", mesh, "--keep", "10%", "-o", out)
+    expect(summary["parts_left_alone"] == 0 and summary["triangles_after"] <= summary["triangles_before"] // 10 + 1,
+           f"{summary}")
+
+
 GROUPS = {
-    "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary],
-    "reduce_contours": [case_cube_reduced_90, case_contour_reduce],
+    "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
+                   case_overlap, case_manifold_parts],
+    "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
+                        case_sphere_contour_passes],
 }
 
 

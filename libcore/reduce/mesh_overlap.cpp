@@ -1,0 +1,196 @@
+// The broad phase of the self-overlap check (see mesh_overlap.h). Cells are
+// grouped by a hash into buckets (a counting sort), buckets are sorted and
+// tested in parallel.
+#include "mesh_overlap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace isoform::reduce {
+namespace {
+
+constexpr int kCellBits = 21;  // per axis: cell keys pack three into 63 bits
+constexpr int64_t kCellMax = (int64_t(1) << kCellBits) - 1;
+
+struct Box {
+  float lo[3], hi[3];
+  bool valid;
+};
+
+struct Entry {
+  uint64_t key;
+  int32_t triangle;
+  // Bit k: this cell is the first of the triangle's box along axis k. A
+  // pair's common box starts in the cell where, on every axis, one of the two
+  // starts, so (a.first | b.first) == 7 tests the pair in that cell only.
+  uint32_t first;
+  bool operator<(const Entry& o) const { return key != o.key ? key < o.key : triangle < o.triangle; }
+};
+
+// The corners of triangle t, in double.
+struct Corners {
+  const Mesh& mesh;
+  bool precise;
+  explicit Corners(const Mesh& m) : mesh(m), precise(m.precise_points.size() == m.points.size()) {}
+  Point3 point(int32_t v) const {
+    const size_t i = 3 * size_t(v);
+    if (precise) return {mesh.precise_points[i], mesh.precise_points[i + 1], mesh.precise_points[i + 2]};
+    return {double(mesh.points[i]), double(mesh.points[i + 1]), double(mesh.points[i + 2])};
+  }
+  void of(size_t t, Point3 out[3]) const {
+    for (int k = 0; k < 3; ++k) out[k] = point(mesh.triangles[3 * t + size_t(k)]);
+  }
+};
+
+// Float boxes rounded outward, so that they hold the double triangles.
+std::vector<Box> triangle_boxes(const Corners& corners, size_t nt) {
+  std::vector<Box> boxes(nt);
+  for (size_t t = 0; t < nt; ++t) {
+    Point3 p[3];
+    corners.of(t, p);
+    Box& b = boxes[t];
+    b.valid = true;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = std::min({p[0][k], p[1][k], p[2][k]}), hi = std::max({p[0][k], p[1][k], p[2][k]});
+      b.valid &= std::isfinite(lo) && std::isfinite(hi);
+      b.lo[k] = std::nextafter(float(lo), -INFINITY);
+      b.hi[k] = std::nextafter(float(hi), INFINITY);
+    }
+  }
+  return boxes;
+}
+
+struct Grid {
+  double origin[3] = {0, 0, 0};
+  double inverse_size = 1.0;
+
+  int64_t cell(float x, int k) const {
+    const double c = std::floor((double(x) - origin[k]) * inverse_size);
+    return int64_t(std::clamp(c, 0.0, double(kCellMax)));
+  }
+  static uint64_t key(int64_t x, int64_t y, int64_t z) {
+    return uint64_t(x) | uint64_t(y) << kCellBits | uint64_t(z) << (2 * kCellBits);
+  }
+};
+
+// Cells about the mean box size, at most 2^21 along the largest extent.
+Grid make_grid(const std::vector<Box>& boxes) {
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, sum = 0;
+  size_t n = 0;
+  for (const Box& b : boxes) {
+    if (!b.valid) continue;
+    double extent = 0;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], double(b.lo[k]));
+      hi[k] = std::max(hi[k], double(b.hi[k]));
+      extent = std::max(extent, double(b.hi[k]) - double(b.lo[k]));
+    }
+    sum += extent;
+    ++n;
+  }
+  Grid g;
+  if (n == 0) return g;
+  const double span = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  double size = std::max(sum / double(n), span / double(kCellMax - 1));
+  if (!(size > 0)) size = 1.0;
+  for (int k = 0; k < 3; ++k) g.origin[k] = lo[k];
+  g.inverse_size = 1.0 / size;
+  return g;
+}
+
+// The cells of one box, with their Entry::first bits.
+template <class Visit>
+void for_cells(const Box& b, const Grid& g, Visit visit) {
+  const int64_t x0 = g.cell(b.lo[0], 0), x1 = g.cell(b.hi[0], 0), y0 = g.cell(b.lo[1], 1), y1 = g.cell(b.hi[1], 1),
+                z0 = g.cell(b.lo[2], 2), z1 = g.cell(b.hi[2], 2);
+  for (int64_t z = z0; z <= z1; ++z)
+    for (int64_t y = y0; y <= y1; ++y)
+      for (int64_t x = x0; x <= x1; ++x)
+        visit(Grid::key(x, y, z), uint32_t(x == x0) | uint32_t(y == y0) << 1 | uint32_t(z == z0) << 2);
+}
+
+uint64_t bucket_of(uint64_t key, int bits) { return (key * 0x9E3779B97F4A7C15ull) >> (64 - bits); }
+
+// (cell, triangle) entries grouped by a hash of the cell (a counting sort,
+// O(n)); each bucket is sorted later, so equal cells end up adjacent.
+struct Buckets {
+  std::vector<size_t> start;  // per bucket, into entries
+  std::vector<Entry> entries;
+};
+
+Buckets grid_entries(const std::vector<Box>& boxes, const Grid& g) {
+  size_t n = 0;
+  for (const Box& b : boxes)
+    if (b.valid) for_cells(b, g, [&](uint64_t, uint32_t) { ++n; });
+  int bits = 1;  // about 8 entries a bucket
+  while (bits < 40 && (size_t(1) << bits) < n / 8) ++bits;
+  Buckets out;
+  out.start.assign((size_t(1) << bits) + 1, 0);
+  for (const Box& b : boxes)
+    if (b.valid) for_cells(b, g, [&](uint64_t key, uint32_t) { ++out.start[bucket_of(key, bits) + 1]; });
+  for (size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
+  std::vector<size_t> fill(out.start.begin(), out.start.end() - 1);
+  out.entries.resize(n);
+  for (size_t t = 0; t < boxes.size(); ++t)
+    if (boxes[t].valid)
+      for_cells(boxes[t], g, [&](uint64_t key, uint32_t first) {
+        out.entries[fill[bucket_of(key, bits)]++] = {key, int32_t(t), first};
+      });
+  return out;
+}
+
+bool boxes_meet(const Box& a, const Box& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
+  const Corners corners(mesh);
+  const std::vector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
+  const Grid grid = make_grid(boxes);
+  Buckets buckets = grid_entries(boxes, grid);
+  tbb::enumerable_thread_specific<std::vector<OverlapPair>> found;
+  auto test_cell = [&](const Entry* e, size_t count, std::vector<OverlapPair>& out) {
+    for (size_t p = 0; p < count; ++p)
+      for (size_t q = p + 1; q < count; ++q) {
+        if ((e[p].first | e[q].first) != 7) continue;
+        const int32_t a = e[p].triangle, b = e[q].triangle;  // a < b: sorted
+        if (!boxes_meet(boxes[size_t(a)], boxes[size_t(b)])) continue;
+        Point3 pa[3], pb[3];
+        corners.of(size_t(a), pa);
+        corners.of(size_t(b), pb);
+        const PairOverlap o = triangles_overlap(pa, &mesh.triangles[3 * size_t(a)], pb, &mesh.triangles[3 * size_t(b)]);
+        if (o.overlap) out.push_back({a, b, o.near});
+      }
+  };
+  const size_t bucket_count = buckets.start.size() - 1;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, bucket_count, 1024), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<OverlapPair>& out = found.local();
+    for (size_t k = r.begin(); k != r.end(); ++k) {
+      Entry* first = buckets.entries.data() + buckets.start[k];
+      Entry* last = buckets.entries.data() + buckets.start[k + 1];
+      if (last - first < 2) continue;
+      std::sort(first, last);
+      for (Entry* i = first; i != last;) {
+        Entry* end = i;
+        while (end != last && end->key == i->key) ++end;
+        if (end - i > 1) test_cell(i, size_t(end - i), out);
+        i = end;
+      }
+    }
+  });
+  std::vector<OverlapPair> all;
+  for (auto& part : found) all.insert(all.end(), part.begin(), part.end());
+  std::sort(all.begin(), all.end(),
+            [](const OverlapPair& x, const OverlapPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  return all;
+}
+
+}  // namespace isoform::reduce

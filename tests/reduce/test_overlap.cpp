@@ -1,0 +1,176 @@
+// The self-overlap check of the reduction's input: the triangle pair test on
+// hand-made cases (crossing, contact, coplanar, shared vertex, shared edge,
+// fold), and the grid's pairs against all pairs on meshes that do and do not
+// overlap themselves, flat and tilted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "libcore/errors.h"
+#include "libcore/reduce/mesh_overlap.h"
+#include "libcore/reduce/triangle_overlap.h"
+#include "libcore/reduce/validate.h"
+#include "test_meshes.h"
+
+namespace isoform::reduce {
+namespace {
+
+struct Tri {
+  Point3 p[3];
+  int32_t v[3];
+};
+
+PairOverlap test(const Tri& a, const Tri& b) { return triangles_overlap(a.p, a.v, b.p, b.v); }
+
+// The unit right triangle in z = 0, vertices 0 1 2.
+const Tri kBase = {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {0, 1, 2}};
+
+TEST(TriangleOverlap, DisjointAndParallelDoNotOverlap) {
+  EXPECT_FALSE(test(kBase, {{{0, 0, 1}, {2, 0, 1}, {0, 2, 1}}, {3, 4, 5}}).overlap);
+  EXPECT_FALSE(test(kBase, {{{3, 3, -1}, {3, 3, 1}, {4, 4, 0}}, {3, 4, 5}}).overlap);
+}
+
+TEST(TriangleOverlap, AnEdgeThroughTheInsideIsFoundWhereItCrosses) {
+  const Tri b = {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.6, 0.5}}, {3, 4, 5}};
+  const PairOverlap o = test(kBase, b);
+  ASSERT_TRUE(o.overlap);
+  EXPECT_DOUBLE_EQ(o.near[0], 0.5);
+  EXPECT_DOUBLE_EQ(o.near[1], 0.5);
+  EXPECT_DOUBLE_EQ(o.near[2], 0.0);
+  EXPECT_TRUE(test(b, kBase).overlap);  // either order
+}
+
+TEST(TriangleOverlap, ContactIsNoOverlapACrossingIs) {
+  // b's corner on base's inside: the triangles touch.
+  EXPECT_FALSE(test(kBase, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.5, 1}}, {3, 4, 5}}).overlap);
+  // ... and a hair below it b goes through.
+  const PairOverlap o = test(kBase, {{{0.5, 0.5, -1e-9}, {0.5, 0.5, 1}, {1, 0.5, 1}}, {3, 4, 5}});
+  EXPECT_TRUE(o.overlap);
+  EXPECT_NEAR(o.near[2], 0.0, 1e-15);
+  // Coplanar, along a common edge of other vertices.
+  EXPECT_FALSE(test(kBase, {{{2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {3, 4, 5}}).overlap);
+}
+
+TEST(TriangleOverlap, CoplanarTrianglesOverlapByArea) {
+  EXPECT_TRUE(test(kBase, {{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}, {3, 4, 5}}).overlap);
+  EXPECT_TRUE(test(kBase, {{{0.2, 0.2, 0}, {0.4, 0.2, 0}, {0.2, 0.4, 0}}, {3, 4, 5}}).overlap);  // inside
+  EXPECT_FALSE(test(kBase, {{{2, 2, 0}, {3, 2, 0}, {2, 3, 0}}, {3, 4, 5}}).overlap);
+}
+
+TEST(TriangleOverlap, ASharedVertexAloneIsNoOverlap) {
+  // A fan around vertex 0, bent out of the plane and in it.
+  EXPECT_FALSE(test(kBase, {{{0, 0, 0}, {-1, 0, 0.5}, {0, -1, 0.5}}, {0, 3, 4}}).overlap);
+  EXPECT_FALSE(test(kBase, {{{0, 0, 0}, {-1, 0, 0}, {0, -1, 0}}, {0, 3, 4}}).overlap);
+  EXPECT_FALSE(test(kBase, {{{0, 0, 0}, {0, 2, 0.1}, {-1, 1, 0}}, {0, 3, 4}}).overlap);
+}
+
+TEST(TriangleOverlap, ASharedVertexStillCatchesACrossing) {
+  // The far edge of b passes through base's inside.
+  const PairOverlap o = test(kBase, {{{0, 0, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}}, {0, 3, 4}});
+  ASSERT_TRUE(o.overlap);
+  EXPECT_DOUBLE_EQ(o.near[2], 0.0);
+  // In one plane: b's wedge at vertex 0 (45 to 135 degrees) overlaps base's (0 to 90).
+  EXPECT_TRUE(test(kBase, {{{0, 0, 0}, {1, 1, 0}, {-1, 1, 0}}, {0, 3, 4}}).overlap);
+  // The same wedge as base's, shorter.
+  EXPECT_TRUE(test(kBase, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 3, 4}}).overlap);
+}
+
+TEST(TriangleOverlap, ASharedEdgeOverlapsOnlyWhenFolded) {
+  // Across the edge (0, 1): the mesh's usual neighbour, flat and bent.
+  EXPECT_FALSE(test(kBase, {{{2, 0, 0}, {0, 0, 0}, {1, -1, 0}}, {1, 0, 3}}).overlap);
+  EXPECT_FALSE(test(kBase, {{{2, 0, 0}, {0, 0, 0}, {1, 0.5, 0.01}}, {1, 0, 3}}).overlap);
+  // Folded onto base.
+  EXPECT_TRUE(test(kBase, {{{2, 0, 0}, {0, 0, 0}, {1, 0.5, 0}}, {1, 0, 3}}).overlap);
+}
+
+TEST(TriangleOverlap, TheSameTriangleTwiceOverlaps) {
+  EXPECT_TRUE(test(kBase, {{kBase.p[0], kBase.p[2], kBase.p[1]}, {0, 2, 1}}).overlap);
+}
+
+TEST(TriangleOverlap, DegenerateTrianglesAreLeftToTheirNeighbours) {
+  EXPECT_FALSE(test(kBase, {{{0.5, 0.5, -1}, {0.5, 0.5, 0}, {0.5, 0.5, 1}}, {3, 4, 5}}).overlap);
+}
+
+// Every pair, tested directly.
+std::set<std::pair<int32_t, int32_t>> all_pairs(const Mesh& m) {
+  std::set<std::pair<int32_t, int32_t>> found;
+  auto corner = [&](size_t t, int k) {
+    const size_t v = size_t(m.triangles[3 * t + size_t(k)]);
+    return Point3{m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]};
+  };
+  for (size_t a = 0; a < m.triangle_count(); ++a)
+    for (size_t b = a + 1; b < m.triangle_count(); ++b) {
+      const Point3 pa[3] = {corner(a, 0), corner(a, 1), corner(a, 2)}, pb[3] = {corner(b, 0), corner(b, 1), corner(b, 2)};
+      if (triangles_overlap(pa, &m.triangles[3 * a], pb, &m.triangles[3 * b]).overlap)
+        found.insert({int32_t(a), int32_t(b)});
+    }
+  return found;
+}
+
+std::set<std::pair<int32_t, int32_t>> grid_pairs(const Mesh& m) {
+  std::set<std::pair<int32_t, int32_t>> found;
+  for (const OverlapPair& p : find_overlaps(m)) {
+    EXPECT_LT(p.a, p.b);
+    EXPECT_TRUE(found.insert({p.a, p.b}).second) << "pair " << p.a << ", " << p.b << " twice";
+  }
+  return found;
+}
+
+TEST(MeshOverlap, ClosedAndFlatMeshesDoNotOverlapThemselves) {
+  Mesh torus;
+  add_torus(torus, 24, 16, 2, 0.7, {0, 0, 0});
+  EXPECT_TRUE(find_overlaps(torus).empty());
+  EXPECT_NO_THROW(validate_input(torus, "torus"));
+  const Mesh flat = plane_grid(30);  // every neighbour coplanar
+  EXPECT_TRUE(find_overlaps(flat).empty());
+  Mesh tilted = flat;  // coplanar up to rounding
+  for (size_t v = 0; v < tilted.vertex_count(); ++v) {
+    float* p = &tilted.points[3 * v];
+    p[2] = 0.2f * p[0] + 0.3f * p[1] + 0.1f;
+    tilted.precise_points.insert(tilted.precise_points.end(), {0.1 * p[0], 0.1 * p[1], 0.1 * p[2]});
+  }
+  EXPECT_TRUE(find_overlaps(tilted).empty());
+}
+
+TEST(MeshOverlap, TheGridFindsExactlyThePairsOfTheDirectTest) {
+  Mesh linked;  // two tori through each other, and one apart
+  add_torus(linked, 16, 12, 2, 0.5, {0, 0, 0});
+  add_torus(linked, 16, 12, 2, 0.5, {1.5, 0.3, 0.2});
+  add_torus(linked, 8, 6, 1, 0.3, {10, 0, 0});
+  const auto direct = all_pairs(linked);
+  EXPECT_GT(direct.size(), 20u);
+  EXPECT_EQ(grid_pairs(linked), direct);
+  for (const auto& p : direct) {  // only pairs of the first two tori cross
+    EXPECT_LT(p.first, 384);
+    EXPECT_GE(p.second, 384);
+    EXPECT_LT(p.second, 768);
+  }
+  Mesh fold = plane_grid(12);  // a vertex pulled across its neighbours, in the plane
+  fold.points[3 * (5 * 12 + 5)] = 8.5f;
+  fold.points[3 * (5 * 12 + 5) + 1] = 5.3f;
+  const auto folded = all_pairs(fold);
+  EXPECT_FALSE(folded.empty());
+  EXPECT_EQ(grid_pairs(fold), folded);
+}
+
+TEST(MeshOverlap, TheReductionRefusesTheFirstPairByName) {
+  Mesh m;
+  add_torus(m, 16, 12, 2, 0.5, {0, 0, 0});
+  add_torus(m, 16, 12, 2, 0.5, {1.5, 0.3, 0.2});
+  const auto direct = all_pairs(m);
+  ASSERT_FALSE(direct.empty());
+  const auto first = *direct.begin();
+  const std::string expected = "torus: the mesh overlaps itself: triangles " + std::to_string(first.first) + " and " +
+                               std::to_string(first.second) + " intersect (near ";
+  try {
+    validate_input(m, "torus");
+    ADD_FAILURE() << "accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()).substr(0, expected.size()), expected) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace isoform::reduce
