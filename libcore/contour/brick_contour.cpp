@@ -30,7 +30,16 @@ uint64_t edge_key(int x, int y, int z, int slot) {
 
 BrickContourer::BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method)
     : xform_(index_to_world), iso_(isovalue), method_(method),
-      slots_(method == ContourMethod::Tetra ? 7 : 3) {}
+      slots_(method == ContourMethod::Tetra ? 7 : 3) {
+  // For float samples f: f >= iso_above_ exactly when double(f) >= iso_,
+  // and f == iso_float_ exactly when double(f) == iso_ (NaN when no float is).
+  constexpr float big = std::numeric_limits<float>::max();
+  const float nearest = float(std::clamp(isovalue, -double(big), double(big)));
+  iso_above_ = isovalue > double(big) ? HUGE_VALF
+               : double(nearest) >= isovalue ? nearest
+                                             : std::nextafter(nearest, HUGE_VALF);
+  iso_float_ = double(nearest) == isovalue ? nearest : std::numeric_limits<float>::quiet_NaN();
+}
 
 double BrickContourer::moved(int i, int j, int k) const {
   // Remark 3.8: a sample equal to the isovalue counts as above and moves up
@@ -69,8 +78,8 @@ bool BrickContourer::prepare(const Brick& brick) {
       // Above: f - iso > 0, or f = iso, which moves up (Remark 3.8).
       uint64_t above = 0, undefined = 0;
       for (int i = 0; i < n_[0]; ++i) {
-        above |= uint64_t(double(f[i]) >= iso_) << i;
-        zero |= double(f[i]) == iso_;
+        above |= uint64_t(f[i] >= iso_above_) << i;
+        zero |= f[i] == iso_float_;
       }
       if (!all_defined_) {
         const uint8_t* def = &brick.defined[row];
@@ -357,14 +366,18 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
   // zero-area triangles; among the n fans at least one avoids them.
   int best = 0;
   if (n > 3) {
-    double p[12][3];
+    // The points twice over, so that (apex + m) needs no wrap.
+    double p[24][3];
     for (int m = 0; m < n; ++m)
-      for (int a = 0; a < 3; ++a) p[m][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
+      for (int a = 0; a < 3; ++a)
+        p[m][a] = p[m + n][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
     double best_area = -1;
     for (int apex = 0; apex < n; ++apex) {
+      // The apex's smallest triangle so far; once it is no larger than the
+      // best apex's, this apex cannot win.
       double smallest = HUGE_VAL;
-      for (int m = 1; m + 1 < n; ++m)
-        smallest = std::min(smallest, area2(p[apex], p[(apex + m) % n], p[(apex + m + 1) % n]));
+      for (int m = apex + 1; m + 1 < apex + n && smallest > best_area; ++m)
+        smallest = std::min(smallest, area2(p[apex], p[m], p[m + 1]));
       if (smallest > best_area) {
         best_area = smallest;
         best = apex;
@@ -372,7 +385,14 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
     }
   }
   std::vector<int32_t>& tri = out_->triangles;
-  for (int m = 1; m + 1 < n; ++m) tri.insert(tri.end(), {ids[best], ids[(best + m) % n], ids[(best + m + 1) % n]});
+  const size_t at = tri.size();
+  tri.resize(at + 3 * size_t(n - 2));
+  int32_t* out = &tri[at];
+  for (int m = best + 1; m + 1 < best + n; ++m, out += 3) {
+    out[0] = ids[best];
+    out[1] = ids[m < n ? m : m - n];
+    out[2] = ids[m + 1 < n ? m + 1 : m + 1 - n];
+  }
 }
 
 void BrickContourer::contour_cell_tetra(int i, int j, int k, const double g[8]) {

@@ -64,6 +64,7 @@ class BrickContourer {
 
   Affine xform_;
   double iso_;
+  float iso_above_, iso_float_;  // the isovalue as float thresholds (constructor)
   ContourMethod method_;
   int slots_;
   const Brick* brick_ = nullptr;
