@@ -57,8 +57,10 @@ std::vector<Box> triangle_boxes(const Corners& corners, size_t nt) {
     for (int k = 0; k < 3; ++k) {
       const double lo = std::min({p[0][k], p[1][k], p[2][k]}), hi = std::max({p[0][k], p[1][k], p[2][k]});
       b.valid &= std::isfinite(lo) && std::isfinite(hi);
-      b.lo[k] = std::nextafter(float(lo), -INFINITY);
-      b.hi[k] = std::nextafter(float(hi), INFINITY);
+      b.lo[k] = float(lo);
+      b.hi[k] = float(hi);
+      if (double(b.lo[k]) > lo) b.lo[k] = std::nextafter(b.lo[k], -INFINITY);
+      if (double(b.hi[k]) < hi) b.hi[k] = std::nextafter(b.hi[k], INFINITY);
     }
   }
   return boxes;
@@ -102,15 +104,30 @@ Grid make_grid(const std::vector<Box>& boxes) {
   return g;
 }
 
-// The cells of one box, with their Entry::first bits.
+// The cells a box covers, per axis (none when the box is not valid).
+struct CellRange {
+  int32_t lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};
+  size_t count() const { return size_t(hi[0] - lo[0] + 1) * size_t(hi[1] - lo[1] + 1) * size_t(hi[2] - lo[2] + 1); }
+};
+
+std::vector<CellRange> cell_ranges(const std::vector<Box>& boxes, const Grid& g) {
+  std::vector<CellRange> ranges(boxes.size());
+  for (size_t t = 0; t < boxes.size(); ++t)
+    if (boxes[t].valid)
+      for (int k = 0; k < 3; ++k) {
+        ranges[t].lo[k] = int32_t(g.cell(boxes[t].lo[k], k));
+        ranges[t].hi[k] = int32_t(g.cell(boxes[t].hi[k], k));
+      }
+  return ranges;
+}
+
+// The cells of one range, with their Entry::first bits.
 template <class Visit>
-void for_cells(const Box& b, const Grid& g, Visit visit) {
-  const int64_t x0 = g.cell(b.lo[0], 0), x1 = g.cell(b.hi[0], 0), y0 = g.cell(b.lo[1], 1), y1 = g.cell(b.hi[1], 1),
-                z0 = g.cell(b.lo[2], 2), z1 = g.cell(b.hi[2], 2);
-  for (int64_t z = z0; z <= z1; ++z)
-    for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t x = x0; x <= x1; ++x)
-        visit(Grid::key(x, y, z), uint32_t(x == x0) | uint32_t(y == y0) << 1 | uint32_t(z == z0) << 2);
+void for_cells(const CellRange& r, Visit visit) {
+  for (int32_t z = r.lo[2]; z <= r.hi[2]; ++z)
+    for (int32_t y = r.lo[1]; y <= r.hi[1]; ++y)
+      for (int32_t x = r.lo[0]; x <= r.hi[0]; ++x)
+        visit(Grid::key(x, y, z), uint32_t(x == r.lo[0]) | uint32_t(y == r.lo[1]) << 1 | uint32_t(z == r.lo[2]) << 2);
 }
 
 uint64_t bucket_of(uint64_t key, int bits) { return (key * 0x9E3779B97F4A7C15ull) >> (64 - bits); }
@@ -123,23 +140,21 @@ struct Buckets {
 };
 
 Buckets grid_entries(const std::vector<Box>& boxes, const Grid& g) {
+  const std::vector<CellRange> ranges = cell_ranges(boxes, g);
   size_t n = 0;
-  for (const Box& b : boxes)
-    if (b.valid) for_cells(b, g, [&](uint64_t, uint32_t) { ++n; });
+  for (const CellRange& r : ranges) n += r.count();
   int bits = 1;  // about 8 entries a bucket
   while (bits < 40 && (size_t(1) << bits) < n / 8) ++bits;
   Buckets out;
   out.start.assign((size_t(1) << bits) + 1, 0);
-  for (const Box& b : boxes)
-    if (b.valid) for_cells(b, g, [&](uint64_t key, uint32_t) { ++out.start[bucket_of(key, bits) + 1]; });
+  for (const CellRange& r : ranges) for_cells(r, [&](uint64_t key, uint32_t) { ++out.start[bucket_of(key, bits) + 1]; });
   for (size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
   std::vector<size_t> fill(out.start.begin(), out.start.end() - 1);
   out.entries.resize(n);
-  for (size_t t = 0; t < boxes.size(); ++t)
-    if (boxes[t].valid)
-      for_cells(boxes[t], g, [&](uint64_t key, uint32_t first) {
-        out.entries[fill[bucket_of(key, bits)]++] = {key, int32_t(t), first};
-      });
+  for (size_t t = 0; t < ranges.size(); ++t)
+    for_cells(ranges[t], [&](uint64_t key, uint32_t first) {
+      out.entries[fill[bucket_of(key, bits)]++] = {key, int32_t(t), first};
+    });
   return out;
 }
 

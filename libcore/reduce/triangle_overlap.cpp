@@ -13,9 +13,10 @@ namespace {
 
 using Point2 = std::array<double, 2>;
 
-// Rounding bounds relative to the product of the difference vectors' largest
-// components: the determinants have 6 (3D) and 2 (2D) products, each off by
-// a few units of 2^-53 from the differences, the products and the sums.
+// Rounding bounds relative to the pair's extent D (the largest side of the
+// box around both triangles), which bounds every difference vector: the
+// determinants have 6 (3D) and 2 (2D) products, each off by a few units of
+// 2^-53 from the differences, the products and the sums.
 constexpr double kBound3 = 2e-14, kBound2 = 1e-14;
 
 Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -30,26 +31,45 @@ double largest(const Point3& u) { return std::max({std::fabs(u[0]), std::fabs(u[
 
 Point3 normal(const Point3 t[3]) { return cross(sub(t[1], t[0]), sub(t[2], t[0])); }
 
-// Which side of the plane of (a, b, c) d lies on: +1 on the side of
-// (b - a) x (c - a), -1 on the other, 0 when rounding could decide it.
+// Which side of a plane a point lies on: +1 on the normal's side, -1 on the
+// other, 0 when rounding could decide it.
 struct Side {
   double value;
   int sign;
 };
 
-Side orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-  const Point3 u = sub(b, a), v = sub(c, a), w = sub(d, a);
-  const double det = dot(cross(u, v), w), bound = kBound3 * largest(u) * largest(v) * largest(w);
-  return {det, det > bound ? 1 : det < -bound ? -1 : 0};
+// The bounds of one pair.
+struct Bounds {
+  double b3 = 0, b2 = 0;
+  Bounds(const Point3 a[3], const Point3 b[3]) {
+    double d = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = std::min({a[0][k], a[1][k], a[2][k], b[0][k], b[1][k], b[2][k]});
+      const double hi = std::max({a[0][k], a[1][k], a[2][k], b[0][k], b[1][k], b[2][k]});
+      d = std::max(d, hi - lo);
+    }
+    b3 = kBound3 * d * d * d;
+    b2 = kBound2 * d * d;
+  }
+  Side side(double det) const { return {det, det > b3 ? 1 : det < -b3 ? -1 : 0}; }
+  int sign2(double det) const { return det > b2 ? 1 : det < -b2 ? -1 : 0; }
+};
+
+// The side of the plane through t0 with normal n (n = normal(t)).
+Side orient3d(const Bounds& k, const Point3& t0, const Point3& n, const Point3& d) { return k.side(dot(n, sub(d, t0))); }
+
+Side orient3d(const Bounds& k, const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return orient3d(k, a, cross(sub(b, a), sub(c, a)), d);
 }
 
-Side orient3d(const Point3 t[3], const Point3& d) { return orient3d(t[0], t[1], t[2], d); }
+struct Triangle {
+  const Point3* p;  // three corners
+  Point3 n;         // (p1 - p0) x (p2 - p0)
+  Side side(const Bounds& k, const Point3& d) const { return orient3d(k, p[0], n, d); }
+};
 
-int orient2d(const Point2& a, const Point2& b, const Point2& c) {
-  const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-  const double det = ux * vy - uy * vx;
-  const double bound = kBound2 * std::max(std::fabs(ux), std::fabs(uy)) * std::max(std::fabs(vx), std::fabs(vy));
-  return det > bound ? 1 : det < -bound ? -1 : 0;
+int orient2d(const Bounds& k, const Point2& a, const Point2& b, const Point2& c) {
+  return k.sign2((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
 Point3 mix(const Point3& p, const Point3& q, double w) {
@@ -75,76 +95,76 @@ struct Projection {
 };
 
 // The projection of the better defined of two planes.
-Projection common_plane(const Point3 a[3], const Point3 b[3]) {
-  const Point3 na = normal(a), nb = normal(b);
-  return Projection(largest(na) >= largest(nb) ? na : nb);
+Projection common_plane(const Triangle& a, const Triangle& b) {
+  return Projection(largest(a.n) >= largest(b.n) ? a.n : b.n);
 }
 
 // Some edge of t (turning o) has no corner of u certainly inside it.
-bool separates(const Point2 t[3], int o, const Point2 u[3]) {
-  for (int k = 0; k < 3; ++k) {
-    const Point2 &a = t[k], &b = t[(k + 1) % 3];
-    if (orient2d(a, b, u[0]) * o <= 0 && orient2d(a, b, u[1]) * o <= 0 && orient2d(a, b, u[2]) * o <= 0) return true;
+bool separates(const Bounds& k, const Point2 t[3], int o, const Point2 u[3]) {
+  for (int e = 0; e < 3; ++e) {
+    const Point2 &a = t[e], &b = t[(e + 1) % 3];
+    if (orient2d(k, a, b, u[0]) * o <= 0 && orient2d(k, a, b, u[1]) * o <= 0 && orient2d(k, a, b, u[2]) * o <= 0)
+      return true;
   }
   return false;
 }
 
 // Insides overlap: no edge line of either separates them (two convex
 // polygons apart have a separating line along one of their edges).
-bool insides_overlap_2d(const Point2 a[3], const Point2 b[3]) {
-  const int oa = orient2d(a[0], a[1], a[2]), ob = orient2d(b[0], b[1], b[2]);
+bool insides_overlap_2d(const Bounds& k, const Point2 a[3], const Point2 b[3]) {
+  const int oa = orient2d(k, a[0], a[1], a[2]), ob = orient2d(k, b[0], b[1], b[2]);
   if (oa == 0 || ob == 0) return false;  // a segment in this projection
-  return !separates(a, oa, b) && !separates(b, ob, a);
+  return !separates(k, a, oa, b) && !separates(k, b, ob, a);
 }
 
 // The line through s and x (with y on its side turning o) has p and q on
 // its other side or on it.
-bool splits(const Point2& s, const Point2& x, const Point2& y, const Point2& p, const Point2& q) {
-  const int o = orient2d(s, x, y);
-  return o == 0 || (orient2d(s, x, p) * o <= 0 && orient2d(s, x, q) * o <= 0);
+bool splits(const Bounds& k, const Point2& s, const Point2& x, const Point2& y, const Point2& p, const Point2& q) {
+  const int o = orient2d(k, s, x, y);
+  return o == 0 || (orient2d(k, s, x, p) * o <= 0 && orient2d(k, s, x, q) * o <= 0);
 }
 
 // Wedges at s (less than half-planes) have overlapping insides unless the
 // line of one of their rays separates them.
-bool wedges_overlap(const Point2& s, const Point2& a1, const Point2& a2, const Point2& b1, const Point2& b2) {
-  return !splits(s, a1, a2, b1, b2) && !splits(s, a2, a1, b1, b2) && !splits(s, b1, b2, a1, a2) &&
-         !splits(s, b2, b1, a1, a2);
+bool wedges_overlap(const Bounds& k, const Point2& s, const Point2& a1, const Point2& a2, const Point2& b1,
+                    const Point2& b2) {
+  return !splits(k, s, a1, a2, b1, b2) && !splits(k, s, a2, a1, b1, b2) && !splits(k, s, b1, b2, a1, a2) &&
+         !splits(k, s, b2, b1, a1, a2);
 }
 
 // ---------------------------------------------------------------- in space
 
 // The segment pq crosses t's inside, certainly; where.
-bool segment_crosses(const Point3& p, const Point3& q, const Point3 t[3], Point3* at) {
-  const Side sp = orient3d(t, p), sq = orient3d(t, q);
+bool segment_crosses(const Bounds& k, const Point3& p, const Point3& q, const Triangle& t, Point3* at) {
+  const Side sp = t.side(k, p), sq = t.side(k, q);
   if (sp.sign * sq.sign >= 0) return false;
-  const int s0 = orient3d(p, q, t[0], t[1]).sign, s1 = orient3d(p, q, t[1], t[2]).sign,
-            s2 = orient3d(p, q, t[2], t[0]).sign;
-  if (s0 == 0 || s0 != s1 || s1 != s2) return false;
+  const Point3* c = t.p;
+  const int s0 = orient3d(k, p, q, c[0], c[1]).sign;
+  if (s0 == 0 || orient3d(k, p, q, c[1], c[2]).sign != s0 || orient3d(k, p, q, c[2], c[0]).sign != s0) return false;
   *at = mix(p, q, sp.value / (sp.value - sq.value));
   return true;
 }
-
-bool in_plane(const Point3 t[3], const Point3& p) { return orient3d(t, p).sign == 0; }
 
 bool one_side(int x, int y) { return x * y > 0; }
 
 bool one_side(int x, int y, int z) { return (x > 0 && y > 0 && z > 0) || (x < 0 && y < 0 && z < 0); }
 
-PairOverlap no_shared_vertex(const Point3 a[3], const Point3 b[3]) {
-  const int db[3] = {orient3d(a, b[0]).sign, orient3d(a, b[1]).sign, orient3d(a, b[2]).sign};
+PairOverlap no_shared_vertex(const Bounds& k, const Triangle& a, const Triangle& b) {
+  const int db[3] = {a.side(k, b.p[0]).sign, a.side(k, b.p[1]).sign, a.side(k, b.p[2]).sign};
   if (one_side(db[0], db[1], db[2])) return {};
-  const int da[3] = {orient3d(b, a[0]).sign, orient3d(b, a[1]).sign, orient3d(b, a[2]).sign};
+  const int da[3] = {b.side(k, a.p[0]).sign, b.side(k, a.p[1]).sign, b.side(k, a.p[2]).sign};
   if (one_side(da[0], da[1], da[2])) return {};
   PairOverlap r;
   if (da[0] == 0 && da[1] == 0 && da[2] == 0 && db[0] == 0 && db[1] == 0 && db[2] == 0) {
     const Projection pr = common_plane(a, b);
-    const Point2 a2[3] = {pr(a[0]), pr(a[1]), pr(a[2])}, b2[3] = {pr(b[0]), pr(b[1]), pr(b[2])};
-    r.overlap = insides_overlap_2d(a2, b2);
-    r.near = mix(centroid(a), centroid(b), 0.5);
+    const Point2 a2[3] = {pr(a.p[0]), pr(a.p[1]), pr(a.p[2])}, b2[3] = {pr(b.p[0]), pr(b.p[1]), pr(b.p[2])};
+    r.overlap = insides_overlap_2d(k, a2, b2);
+    r.near = mix(centroid(a.p), centroid(b.p), 0.5);
     return r;
   }
   for (int i = 0; i < 3; ++i)
-    if (segment_crosses(a[i], a[(i + 1) % 3], b, &r.near) || segment_crosses(b[i], b[(i + 1) % 3], a, &r.near)) {
+    if (segment_crosses(k, a.p[i], a.p[(i + 1) % 3], b, &r.near) ||
+        segment_crosses(k, b.p[i], b.p[(i + 1) % 3], a, &r.near)) {
       r.overlap = true;
       return r;
     }
@@ -152,44 +172,43 @@ PairOverlap no_shared_vertex(const Point3 a[3], const Point3 b[3]) {
 }
 
 // a and b share corner s; a's other corners a1 a2, b's b1 b2.
-PairOverlap one_shared_vertex(const Point3 a[3], const Point3 b[3], const Point3& s, const Point3& a1,
-                              const Point3& a2, const Point3& b1, const Point3& b2) {
-  const int d1 = orient3d(a, b1).sign, d2 = orient3d(a, b2).sign;
+PairOverlap one_shared_vertex(const Bounds& k, const Triangle& a, const Triangle& b, const Point3& s,
+                              const Point3& a1, const Point3& a2, const Point3& b1, const Point3& b2) {
+  const int d1 = a.side(k, b1).sign, d2 = a.side(k, b2).sign;
   if (one_side(d1, d2)) return {};
-  const int e1 = orient3d(b, a1).sign, e2 = orient3d(b, a2).sign;
+  const int e1 = b.side(k, a1).sign, e2 = b.side(k, a2).sign;
   PairOverlap r;
   if (d1 == 0 && d2 == 0 && e1 == 0 && e2 == 0) {  // one plane: do the wedges at s overlap?
     const Projection pr = common_plane(a, b);
-    r.overlap = wedges_overlap(pr(s), pr(a1), pr(a2), pr(b1), pr(b2));
-    r.near = mix(centroid(a), centroid(b), 0.5);
+    r.overlap = wedges_overlap(k, pr(s), pr(a1), pr(a2), pr(b1), pr(b2));
+    r.near = mix(centroid(a.p), centroid(b.p), 0.5);
     return r;
   }
   if (one_side(e1, e2)) return {};
-  r.overlap = segment_crosses(a1, a2, b, &r.near) || segment_crosses(b1, b2, a, &r.near);
+  r.overlap = segment_crosses(k, a1, a2, b, &r.near) || segment_crosses(k, b1, b2, a, &r.near);
   return r;
 }
 
 // a and b share the edge uv; c and d are their third corners.
-PairOverlap shared_edge(const Point3 a[3], const Point3 b[3], const Point3& u, const Point3& v, const Point3& c,
-                        const Point3& d) {
-  if (!in_plane(a, d) || !in_plane(b, c)) return {};
+PairOverlap shared_edge(const Bounds& k, const Triangle& a, const Triangle& b, const Point3& u, const Point3& v,
+                        const Point3& c, const Point3& d) {
+  if (a.side(k, d).sign != 0 || b.side(k, c).sign != 0) return {};
   const Projection pr = common_plane(a, b);
   const Point2 U = pr(u), V = pr(v);
   PairOverlap r;
-  r.overlap = orient2d(U, V, pr(c)) * orient2d(U, V, pr(d)) > 0;  // folded onto each other
+  r.overlap = orient2d(k, U, V, pr(c)) * orient2d(k, U, V, pr(d)) > 0;  // folded onto each other
   r.near = mix(mix(u, v, 0.5), mix(c, d, 0.5), 0.5);
   return r;
 }
 
-bool degenerate(const Point3 t[3]) {
-  const Point3 n = normal(t);
-  return !(n[0] != 0 || n[1] != 0 || n[2] != 0);
-}
+bool degenerate(const Point3& n) { return !(n[0] != 0 || n[1] != 0 || n[2] != 0); }
 
 }  // namespace
 
-PairOverlap triangles_overlap(const Point3 a[3], const int32_t ia[3], const Point3 b[3], const int32_t ib[3]) {
-  if (degenerate(a) || degenerate(b)) return {};
+PairOverlap triangles_overlap(const Point3 pa[3], const int32_t ia[3], const Point3 pb[3], const int32_t ib[3]) {
+  const Triangle a{pa, normal(pa)}, b{pb, normal(pb)};
+  if (degenerate(a.n) || degenerate(b.n)) return {};
+  const Bounds k(pa, pb);
   int in_b[3] = {-1, -1, -1};  // for each corner of a, the same vertex's corner in b
   int shared = 0;
   for (int i = 0; i < 3; ++i)
@@ -198,15 +217,15 @@ PairOverlap triangles_overlap(const Point3 a[3], const int32_t ia[3], const Poin
         in_b[i] = j;
         ++shared;
       }
-  if (shared == 0) return no_shared_vertex(a, b);
-  if (shared >= 3) return {true, centroid(a)};
+  if (shared == 0) return no_shared_vertex(k, a, b);
+  if (shared >= 3) return {true, centroid(pa)};
   if (shared == 1) {
     const int i = in_b[0] >= 0 ? 0 : in_b[1] >= 0 ? 1 : 2, j = in_b[i];
-    return one_shared_vertex(a, b, a[i], a[(i + 1) % 3], a[(i + 2) % 3], b[(j + 1) % 3], b[(j + 2) % 3]);
+    return one_shared_vertex(k, a, b, pa[i], pa[(i + 1) % 3], pa[(i + 2) % 3], pb[(j + 1) % 3], pb[(j + 2) % 3]);
   }
   const int i = in_b[0] < 0 ? 0 : in_b[1] < 0 ? 1 : 2;      // a's corner off the edge
   const int j = 3 - in_b[(i + 1) % 3] - in_b[(i + 2) % 3];  // b's
-  return shared_edge(a, b, a[(i + 1) % 3], a[(i + 2) % 3], a[i], b[j]);
+  return shared_edge(k, a, b, pa[(i + 1) % 3], pa[(i + 2) % 3], pa[i], pb[j]);
 }
 
 }  // namespace isoform::reduce

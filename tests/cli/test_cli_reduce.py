@@ -5,6 +5,7 @@ test_cli.py's helpers.
 
 Usage: test_cli_reduce.py ISOFORM_BINARY SHARED_DATA_DIR GROUP"""
 import os
+import struct
 import sys
 from collections import Counter
 
@@ -54,6 +55,25 @@ def write_grid_obj(path, n):
             for i in range(n - 1):
                 a = j * n + i + 1
                 f.write(f"f {a} {a + 1} {a + n + 1}\nf {a} {a + n + 1} {a + n}\n")
+
+
+def write_obj(path, points, faces, mode="w"):
+    with open(path, mode) as f:
+        for p in points:
+            f.write("v %.9g %.9g %.9g\n" % p)
+        for a, b, c in faces:
+            f.write(f"f {a + 1} {b + 1} {c + 1}\n")
+
+
+def expect_refused(tmp, args, path, message, inputs):
+    """Exit 1, one line that starts with the file and message, no output, input untouched."""
+    digest = sha256(path)
+    proc = run(*args, code=1)
+    check_one_error_line(proc, [path])
+    expect(proc.stderr.startswith(f"isoform: error: {path}: {message}"), f"error line: {proc.stderr!r}")
+    left = leftovers(tmp, inputs)
+    expect(left == [], f"isoform {' '.join(args)} left behind {left}")
+    expect(sha256(path) == digest, f"isoform {' '.join(args)} changed its input")
 
 
 def case_help(tmp):
@@ -143,31 +163,13 @@ def case_bad_input(tmp):
     nan = os.path.join(tmp, "nan.obj")
     with open(nan, "w") as f:
         f.write("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
-    expect_failure(tmp, ["reduce", nan, "-o", out], ["nan.obj"], ["fin.obj", "nan.obj"])
+    expect_refused(tmp, ["reduce", nan, "-o", out], nan, "line 2: v has a value that is not finite",
+                   ["fin.obj", "nan.obj"])
     for keep in ("0%", "150%", "ten"):
         expect_failure(tmp, ["reduce", fin, "--keep", keep, "-o", out], ["--keep", keep], ["fin.obj", "nan.obj"])
     expect_failure(tmp, ["reduce", fin, "-o", fin], ["fin.obj"], ["fin.obj", "nan.obj"])
     expect_failure(tmp, ["contour", data("cube.vdb"), "--reduce", "100%", "-o", out], ["--reduce"],
                    ["fin.obj", "nan.obj"])
-
-
-def write_obj(path, points, faces, mode="w"):
-    with open(path, mode) as f:
-        for p in points:
-            f.write("v %.9g %.9g %.9g\n" % p)
-        for a, b, c in faces:
-            f.write(f"f {a + 1} {b + 1} {c + 1}\n")
-
-
-def expect_refused(tmp, args, path, message, inputs):
-    """Exit 1, one line that starts with the file and message, no output, input untouched."""
-    digest = sha256(path)
-    proc = run(*args, code=1)
-    check_one_error_line(proc, [path])
-    expect(proc.stderr.startswith(f"isoform: error: {path}: {message}"), f"error line: {proc.stderr!r}")
-    left = leftovers(tmp, inputs)
-    expect(left == [], f"isoform {' '.join(args)} left behind {left}")
-    expect(sha256(path) == digest, f"isoform {' '.join(args)} changed its input")
 
 
 def case_overlap(tmp):
@@ -180,6 +182,18 @@ def case_overlap(tmp):
                    "the mesh overlaps itself: triangles 0 and 1 intersect (near 0.5, 0.5, 0)", ["cross.obj"])
     expect_refused(tmp, ["reduce", cross, "--keep", "100%", "-o", out], cross, "the mesh overlaps itself",
                    ["cross.obj"])
+
+
+def case_nan_ply(tmp):
+    """A binary PLY with a NaN coordinate: the line names the file and the vertex."""
+    path = os.path.join(tmp, "nan.ply")
+    header = ("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n")
+    body = b"".join(struct.pack("<3f", *p) for p in ((0, 0, 0), (1, 0, float("nan")), (0, 1, 0)))
+    with open(path, "wb") as f:
+        f.write(header.encode("ascii") + body + struct.pack("<B3i", 3, 0, 1, 2))
+    expect_refused(tmp, ["reduce", path, "-o", os.path.join(tmp, "out.ply")], path,
+                   "vertex 1 has z = nan, which is not a finite float", ["nan.ply"])
 
 
 FIN = [(5, 0, 0), (6, 0, 0), (5, 1, 0), (5, -1, 0), (5, 0, 1)]
@@ -231,7 +245,7 @@ def case_sphere_contour_passes(tmp):
 
 GROUPS = {
     "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
-                   case_overlap, case_manifold_parts],
+                   case_overlap, case_manifold_parts, case_nan_ply],
     "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
                         case_sphere_contour_passes],
 }
