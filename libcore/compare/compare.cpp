@@ -5,6 +5,7 @@
 //   3. the edges: both sides at the same edge points, normal and H gaps.
 #include "compare.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -131,13 +132,15 @@ class SurfacePass {
 
   // Step 3: each interior edge once, k points, from both sides.
   void edge_pass(SurfaceMetrics& m) const {
-    StatsSum normal_gap, position_gap, h_jump;
+    StatsSum normal_gap, position_gap, plane_gap, h_jump;
+    long long folded = 0;
     for (size_t t = 0; t < base_.triangle_count(); ++t)
       for (int e = 0; e < 3; ++e) {
         const int32_t o = base_.neighbours.empty() ? -1 : base_.neighbours[3 * t + size_t(e)];
         if (o < 0 || size_t(o) < t) continue;
         const int g = opposite_edge(t, e, size_t(o));
         if (g < 0) continue;  // inconsistently oriented: no shared parameter
+        bool fold = false;
         for (int j = 0; j < k_; ++j) {
           const double s = (j + 0.5) / k_;
           double u0, v0, u1, v1;
@@ -145,14 +148,20 @@ class SurfacePass {
           edge_parameter(g, 1.0 - s, u1, v1);
           SurfaceSample a, b;
           if (!surface_.evaluate(t, u0, v0, a) || !surface_.evaluate(size_t(o), u1, v1, b)) continue;
-          normal_gap.add(angle_between(a.normal, b.normal));
+          const double gap = angle_between(a.normal, b.normal);
+          normal_gap.add(gap);
+          plane_gap.add(std::min(gap, M_PI - gap));
+          fold = fold || gap > 0.5 * M_PI;
           position_gap.add(distance(a.point, b.point));
           const SampleCurvature ca = curvature_of(a), cb = curvature_of(b);
           if (ca.ok && cb.ok) h_jump.add(ca.mean - cb.mean);
         }
+        folded += fold ? 1 : 0;
       }
     m.normal_gap = normal_gap.stats();
     m.position_gap = position_gap.stats();
+    m.tangent_plane_gap = plane_gap.stats();
+    m.folded_edges = folded;
     m.mean_curvature_jump = h_jump.stats();
   }
 

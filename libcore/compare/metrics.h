@@ -43,6 +43,12 @@ struct SurfaceMetrics {
   Stats data_point_error;           // |surface at a vertex's corner - vertex|, world units
   Stats normal_gap;                 // radians between the two sides' normals at edge samples
   Stats position_gap;               // world units between the two sides' points there
+  // Radians between the two sides' tangent planes there (unoriented: the
+  // smaller of the normal gap and pi minus it).
+  Stats tangent_plane_gap;
+  // Edges with a sample where the two sides' normals point apart (gap above
+  // pi/2): the surface folds back along them (patch/orientation.h).
+  long long folded_edges = 0;
   Stats mean_curvature_jump;        // |H_left - H_right| at edge samples, 1/world unit
   Stats mean_curvature_error;       // |H - H_reference| where the reference knows H
   Spread mean_curvature;            // H over all samples

@@ -36,6 +36,8 @@ Json surface_json(const SurfaceMetrics& m) {
           {"data_point_error", stats_json(m.data_point_error)},
           {"normal_gap_radians", stats_json(m.normal_gap)},
           {"position_gap", stats_json(m.position_gap)},
+          {"tangent_plane_gap_radians", stats_json(m.tangent_plane_gap)},
+          {"folded_edges", m.folded_edges},
           {"mean_curvature_jump", stats_json(m.mean_curvature_jump)},
           {"mean_curvature_error", stats_json(m.mean_curvature_error)},
           {"mean_curvature", spread_json(m.mean_curvature)},
@@ -126,6 +128,10 @@ std::string report_markdown(const CompareResult& r, const StudyInfo& info) {
   row(out, "error at data points, RMS", r, [](const SurfaceMetrics& m) { return g(m.data_point_error.rms); });
   row(out, "normal gap across edges, max (rad)", r, [](const SurfaceMetrics& m) { return g(m.normal_gap.max); });
   row(out, "normal gap across edges, RMS (rad)", r, [](const SurfaceMetrics& m) { return g(m.normal_gap.rms); });
+  row(out, "tangent-plane gap across edges, max (rad)", r,
+      [](const SurfaceMetrics& m) { return g(m.tangent_plane_gap.max); });
+  row(out, "folded edges (normals apart by more than pi/2)", r,
+      [](const SurfaceMetrics& m) { return std::to_string(m.folded_edges); });
   row(out, "mean-curvature jump across edges, max", r, [](const SurfaceMetrics& m) { return g(m.mean_curvature_jump.max); });
   row(out, "mean-curvature jump across edges, RMS", r, [](const SurfaceMetrics& m) { return g(m.mean_curvature_jump.rms); });
   row(out, "H error against the reference, RMS", r,

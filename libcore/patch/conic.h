@@ -88,6 +88,20 @@ V3<T> end_tangent(const V3<T>& n, const V3<T>& p, const V3<T>& dh) {
   return unit(t);
 }
 
+// cos and sin of half the angle in [0, pi] whose cosine is c and sine
+// s >= 0 (c^2 + s^2 = 1), without atan2: the square root is taken of the
+// term that stays away from 0, so its derivatives are finite.
+template <class T>
+ISOFORM_JET_INLINE void half_angle(const T& c, const T& s, T& ch, T& sh) {
+  if (value_of(c) >= 0.0) {
+    ch = sqrt(0.5 + 0.5 * c);
+    sh = s / (2.0 * ch);
+  } else {
+    sh = sqrt(0.5 - 0.5 * c);
+    ch = s / (2.0 * sh);
+  }
+}
+
 }  // namespace detail
 
 template <class T>
@@ -115,16 +129,18 @@ Conic<T> make_conic(const V3<T>& b0, const V3<T>& n0, const V3<T>& b3, const V3<
   const V3<T> e = cross(c.p, dh);
   const T s0 = dot(c.t0, e), s3 = dot(c.t3, e);
   if (value_of(s0) * value_of(s3) > 0.0) c.flags |= kConicNonConvex;
-  const T alpha = abs(atan2(s0, dot(c.t0, dh)));
-  const T beta = abs(atan2(s3, dot(c.t3, dh)));
   const T sin_alpha = abs(s0), sin_beta = abs(s3);
-  // gamma = pi - alpha - beta: sin(gamma/2) = cos(h), cos(gamma/2) = sin(h).
-  const T half = 0.5 * (alpha + beta);
-  T a = cos(half);
+  T ca, sa, cb, sb;  // cos and sin of alpha / 2 and beta / 2
+  detail::half_angle(dot(c.t0, dh), sin_alpha, ca, sa);
+  detail::half_angle(dot(c.t3, dh), sin_beta, cb, sb);
+  // gamma = pi - alpha - beta: sin(gamma/2) = cos(h), cos(gamma/2) = sin(h)
+  // with h = (alpha + beta) / 2.
+  T a = ca * cb - sa * sb;
   if (value_of(a) < 0.0) a = T(0.0);  // tangent lines meet behind the chord
-  const T q = 1.0 / sqrt(1.0 + (a * inv_tension) * (a * inv_tension));
+  // NOTE: automatic weights (inv_tension the constant 0) give q = 1 exactly.
+  const T q = is_zero(inv_tension) ? T(1.0) : 1.0 / sqrt(1.0 + (a * inv_tension) * (a * inv_tension));
   const T omega = q * a;
-  const T cos_half_gamma = sin(half);
+  const T cos_half_gamma = sa * cb + ca * sb;
   const T inv_den = 1.0 / (cos_half_gamma + kFlatAngle);
   const T ratio_0 = (sin_beta + kFlatAngle) * inv_den, ratio_3 = (sin_alpha + kFlatAngle) * inv_den;
   const T scale = q * len / (1.0 + 2.0 * omega);

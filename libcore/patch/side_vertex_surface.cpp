@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <type_traits>
 
 #include "../errors.h"
+#include "fast_eval.h"
+#include "orientation.h"
 #include "patch_eval.h"
 
 namespace isoform::patch {
@@ -94,6 +97,7 @@ SideVertexSurface::SideVertexSurface(const Mesh& mesh, const PatchOptions& optio
   check_triangles(mesh, points_);
   triangles_ = mesh.triangles;
   build_edges(options.edge_tension);
+  for (size_t t = 0; t < triangle_count(); ++t) stats_.inverted_triangles += inverted_triangle(*this, t) ? 1 : 0;
 }
 
 // One curve per unordered vertex pair, lower index first; triangles keep
@@ -139,6 +143,8 @@ void SideVertexSurface::build_edges(const std::vector<EdgeTension>& tension) {
     stats_.opposite_normal_edges += (f & kConicOppositeNormals) ? 1 : 0;
     stats_.fallback_plane_edges += (f & kConicFallbackPlane) ? 1 : 0;
   }
+  polys_.resize(edges);
+  for (size_t e = 0; e < edges; ++e) polys_[e] = make_edge_poly(curves_[e]);
 }
 
 bool SideVertexSurface::point(size_t triangle, double u, double v, V3d& out) const {
@@ -225,22 +231,39 @@ bool SideVertexSurface::evaluate(size_t tri, double u, double v, SurfaceSample& 
   return evaluate_order(tri, u, v, out, options_.second_derivatives);
 }
 
-bool SideVertexSurface::evaluate_order(size_t tri, double u, double v, SurfaceSample& out, bool second) const {
+// `eval(bool_constant<S>, p)` fills p with the point as jets, false at a
+// corner.
+template <class Eval>
+bool SideVertexSurface::evaluate_with(size_t tri, double u, double v, SurfaceSample& out, bool second,
+                                      Eval eval) const {
   if (tri >= triangle_count() || !(u >= 0.0) || !(v >= 0.0) || !(u + v <= 1.0 + 1e-12)) return false;
   bool inside = false;
   if (second) {
     V3<Jet<true>> p;
-    inside = patch_point(*this, tri, Jet<true>::variable(u, 0), Jet<true>::variable(v, 1), p);
+    inside = eval(std::true_type{}, p);
     if (inside) fill(p, out);
   } else {
     V3<Jet<false>> p;
-    inside = patch_point(*this, tri, Jet<false>::variable(u, 0), Jet<false>::variable(v, 1), p);
+    inside = eval(std::false_type{}, p);
     if (inside) fill(p, out);
   }
   if (!inside) return corner(tri, (u < 0.5 && v < 0.5) ? 0 : (u >= v ? 1 : 2), out);
   if (!finite(out.point) || !finite(out.du) || !finite(out.dv)) return false;
   if (out.has_second && (!finite(out.duu) || !finite(out.duv) || !finite(out.dvv))) return false;
   return set_normal(out);
+}
+
+bool SideVertexSurface::evaluate_order(size_t tri, double u, double v, SurfaceSample& out, bool second) const {
+  return evaluate_with(tri, u, v, out, second, [&](auto order, auto& p) {
+    return fast::patch_point<decltype(order)::value>(*this, tri, u, v, p);
+  });
+}
+
+bool SideVertexSurface::evaluate_reference(size_t tri, double u, double v, SurfaceSample& out, bool second) const {
+  return evaluate_with(tri, u, v, out, second, [&](auto order, auto& p) {
+    constexpr bool S = decltype(order)::value;
+    return patch_point(*this, tri, Jet<S>::variable(u, 0), Jet<S>::variable(v, 1), p);
+  });
 }
 
 std::unique_ptr<TriangleSurface> make_side_vertex_surface(const Mesh& mesh, const PatchOptions& options,

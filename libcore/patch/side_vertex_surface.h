@@ -16,6 +16,7 @@
 #include "../mesh.h"
 #include "../surface.h"
 #include "edge_curve.h"
+#include "edge_poly.h"
 
 namespace isoform::patch {
 
@@ -53,6 +54,10 @@ struct PatchStats {
   long long nonconvex_edges = 0;        // edge conics with an inflection
   long long opposite_normal_edges = 0;  // n0 = -n3 on an edge
   long long fallback_plane_edges = 0;   // no conic plane from the data
+  // Triangles whose face normal points against the sum of their vertex
+  // normals: their patches are oriented against the data, and meet their
+  // neighbours folded over (orientation.h finds the folded edges).
+  long long inverted_triangles = 0;
 };
 
 // One mesh edge in a triangle: its curve, and whether the triangle's local
@@ -72,13 +77,17 @@ class SideVertexSurface final : public TriangleSurface {
   // u, v lie outside the triangle or the data make the surface undefined.
   bool evaluate(size_t triangle, double u, double v, SurfaceSample& out) const override;
   // As evaluate, with second derivatives only when `second` (whatever the
-  // options say).
+  // options say). The fast path (fast_eval.h).
   bool evaluate_order(size_t triangle, double u, double v, SurfaceSample& out, bool second) const;
+  // The same surface by the reference path (patch_eval.h: the whole
+  // construction in two-variable jets); for tests of the fast path.
+  bool evaluate_reference(size_t triangle, double u, double v, SurfaceSample& out, bool second) const;
   // The point only (the fast path of tessellation); false as above.
   bool point(size_t triangle, double u, double v, V3d& out) const;
 
   // The shared curve of mesh edge e and its end vertices (lower first).
   const EdgeCurve& edge_curve(size_t e) const { return curves_[e]; }
+  const EdgePoly& edge_poly(size_t e) const { return polys_[e]; }
   size_t edge_count() const { return curves_.size(); }
   int32_t edge_vertex(size_t e, int end) const { return edge_vertices_[2 * e + end]; }
   // Edge slot i of triangle t is the edge opposite its vertex i.
@@ -97,6 +106,8 @@ class SideVertexSurface final : public TriangleSurface {
  private:
   void build_edges(const std::vector<EdgeTension>& tension);
   bool corner(size_t triangle, int i, SurfaceSample& out) const;
+  template <class Eval>
+  bool evaluate_with(size_t triangle, double u, double v, SurfaceSample& out, bool second, Eval eval) const;
 
   PatchOptions options_;
   std::vector<V3d> points_, normals_;
@@ -104,6 +115,7 @@ class SideVertexSurface final : public TriangleSurface {
   std::vector<int32_t> edge_vertices_;
   std::vector<TriangleEdge> triangle_edges_;
   std::vector<EdgeCurve> curves_;
+  std::vector<EdgePoly> polys_;
   std::vector<double> edge_inv_tension_;
   double inv_tension_ = 0.0;
   PatchStats stats_;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "jet.h"
+#include "jet1.h"
 
 namespace isoform::patch {
 
