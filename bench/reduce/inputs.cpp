@@ -143,4 +143,14 @@ void prepare_reference(Input& in, const Options& o) {
   isoform_mesh_free(mesh);
 }
 
+void save_input(const Input& in, const std::string& path) {
+  isoform_mesh* mesh = nullptr;
+  check(isoform_mesh_from_arrays_f64(in.mesh.points.data(), in.mesh.vertex_count(), in.mesh.triangles.data(),
+                                     in.mesh.triangle_count(), &mesh),
+        "isoform_mesh_from_arrays_f64");
+  const isoform_status st = isoform_mesh_save(mesh, path.c_str());
+  isoform_mesh_free(mesh);
+  check(st, ("isoform_mesh_save " + path).c_str());
+}
+
 }  // namespace isoform_reduce_bench

@@ -113,6 +113,7 @@ int run(const irb::Options& o, const std::string& command) {
   for (const std::string& name : o.inputs) {
     irb::Input in = name == "graph" ? irb::make_graph(o) : irb::make_contour(o);
     irb::prepare_reference(in, o);
+    if (!o.save_inputs.empty()) irb::save_input(in, o.save_inputs + "/" + in.name + ".ply");
     std::fprintf(stderr, "%s: %zu triangles, %zu vertices, diagonal %.4g (%s)\n", in.name.c_str(),
                  in.mesh.triangle_count(), in.mesh.vertex_count(), in.diagonal, in.what.c_str());
     std::vector<irb::Row> rows;
@@ -200,6 +201,7 @@ int main(int argc, char** argv) {
                "isoform keeps the border by lock_boundary (no triangle touching it goes), not its graph option");
   app.add_option("--markdown", o.markdown_path, "Write the tables as Markdown to this file");
   app.add_option("--json", o.json_path, "Write the report as JSON to this file");
+  app.add_option("--save-inputs", o.save_inputs, "Also write each input mesh as FOLDER/<input>.ply (to profile isoform reduce)");
   CLI11_PARSE(app, argc, argv);
   std::ostringstream command;
   command << "isoform_reduce_bench";

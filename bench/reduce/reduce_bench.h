@@ -59,6 +59,7 @@ struct Options {
   int reps = 1;
   std::string data_dir;
   std::string json_path, markdown_path;
+  std::string save_inputs;  // folder to write each input as <name>.ply (profiling `isoform reduce`); empty = none
 };
 
 struct Timing {
@@ -93,6 +94,8 @@ Input make_graph(const Options& o);
 Input make_contour(const Options& o);
 // Samples, tree and diagonal of the input's mesh.
 void prepare_reference(Input& in, const Options& o);
+// Writes the input as a PLY file (isoform_mesh_save), for profiling `isoform reduce` on it.
+void save_input(const Input& in, const std::string& path);
 
 bool isoform_reduce_available();
 Run run_isoform(const Input& in, double percent, const Options& o);

@@ -2,8 +2,8 @@
 // removal, in passes (Remark 5.9, READING-NOTES): a pass takes the
 // triangles that exist when it starts ("old") in increasing weight and tries
 // each once; triangles made during the pass ("new") wait for the next pass.
-// The queue is lazy: a pass sorts (weight, id, stamp) once, and an entry
-// whose face has changed since (stamp) or was made in this pass is skipped.
+// The queue is lazy (queue.h): a pass orders (weight, id, stamp) once, and an
+// entry whose face has changed since (stamp) or was made in this pass is skipped.
 //
 // NOTE: ties of the weight (many on regular grids, all on a plane) are
 // broken by the face id, lower first; ids are those of the input's triangle
@@ -21,9 +21,9 @@
 #include "../errors.h"
 #include "../mesh_normals.h"
 #include "manifold_parts.h"
+#include "queue.h"
 #include "removal.h"
 #include "validate.h"
-#include "weights.h"
 #include "work_mesh.h"
 
 namespace isoform {
@@ -58,27 +58,6 @@ Mesh prepared_copy(const Mesh& mesh, const Progress& progress, bool* computed) {
   return m;
 }
 
-struct Entry {
-  double weight;
-  int face;
-  uint32_t stamp;
-};
-
-void queue_pass(const WorkMesh& w, std::vector<Entry>& queue) {
-  queue.clear();
-  for (size_t f = 0; f < w.tri.size(); ++f) {
-    if (!w.face_alive[f]) continue;
-    const auto& t = w.tri[f];
-    const double sigma = reduce::angle_weight(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
-    const double weight = reduce::triangle_weight(sigma, w.absolute[size_t(t[0])], w.absolute[size_t(t[1])],
-                                                  w.absolute[size_t(t[2])]);
-    queue.push_back({weight, int(f), w.face_stamp[f]});
-  }
-  std::sort(queue.begin(), queue.end(), [](const Entry& a, const Entry& b) {
-    return std::tie(a.weight, a.face) < std::tie(b.weight, b.face);
-  });
-}
-
 void count_refusal(Outcome o, ReduceRefusals& r) {
   switch (o) {
     case Outcome::Corona: ++r.corona; break;
@@ -87,6 +66,7 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
     case Outcome::Nonmanifold: ++r.nonmanifold; break;
     case Outcome::Boundary: ++r.boundary; break;
     case Outcome::Tolerance:
+    case Outcome::Deferred:
     case Outcome::RmsStop: ++r.tolerance; break;
     case Outcome::Removed: break;
   }
@@ -97,16 +77,18 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
 void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, const Progress& progress,
                 ReduceStats& stats) {
   reduce::Remover remover(w, options);
-  std::vector<Entry> queue;
+  reduce::PassQueue queue;
+  // Beyond the seed (graph mode): a removal that would take one of its knots
+  // past 4 times the RMS error of the knots moved so far waits (docs/reduce.md).
+  if (options.graph) remover.tracker().set_guard(4.0);
   const long long start = w.live_faces;
   long long tries = 0;
   stats.stop_reason = 0;
   while (w.live_faces > target) {
     const int pass = ++stats.passes;
-    queue_pass(w, queue);
-    long long removed = 0;
+    long long removed = 0, deferred = 0;
     bool stop = false;
-    for (const Entry& e : queue) {
+    for (const reduce::QueueEntry& e : queue.next_pass(w, pass)) {
       if (w.live_faces <= target) break;
       const size_t f = size_t(e.face);
       if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
@@ -121,6 +103,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         continue;
       }
       count_refusal(o, stats.refused);
+      deferred += o == Outcome::Deferred ? 1 : 0;
       if (o == Outcome::RmsStop) {
         stop = true;
         break;
@@ -129,6 +112,10 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
     if (stop) {
       stats.stop_reason = 3;
       break;
+    }
+    if (removed == 0 && deferred > 0) {  // the guard stalls the reduction: relax it
+      remover.tracker().set_guard(2 * remover.tracker().guard());
+      continue;
     }
     if (removed == 0) {
       stats.stop_reason = options.tolerance > 0 && stats.refused.tolerance > 0 ? 2 : 1;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "queue.h"
+
 namespace isoform::reduce {
 namespace {
 
@@ -42,7 +44,7 @@ double tracked_rms(const ReduceOptions& o) {
 
 Remover::Remover(WorkMesh& w, const ReduceOptions& options)
     : w_(w), options_(options),
-      tracker_(w, tracked_distance(options), tracked_rms(options)),
+      tracker_(w, tracked_distance(options), tracked_rms(options), options.measure_error),
       mark_(w.tri.size(), 0) {}
 
 // Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
@@ -158,14 +160,14 @@ Outcome Remover::try_remove(int f, int pass) {
   if (options_.refine_point && tracker_.active()) {
     Eigen::Vector3d refined = point;
     const Eigen::Vector3d direction = options_.graph ? Eigen::Vector3d(0, 0, 1) : r.normal;
-    tracker_.refine(w_, platelet_, faces_, direction, refined);
+    tracker_.refine(w_, platelet_, frame, faces_, direction, refined);
     // Kept only when the moved point still passes every test.
     if (refined.allFinite() && half_plane_ok(frame, refined) && faces_ok(frame, refined)) point = refined;
   }
   if (tracker_.active()) {
-    bool rms_stop = false;
-    if (!tracker_.check(w_, platelet_, point, faces_, &rms_stop))
-      return rms_stop ? Outcome::RmsStop : Outcome::Tolerance;
+    bool rms_stop = false, deferred = false;
+    if (!tracker_.check(w_, platelet_, point, faces_, &rms_stop, &deferred))
+      return rms_stop ? Outcome::RmsStop : deferred ? Outcome::Deferred : Outcome::Tolerance;
   }
   swaps_ += swaps;
   vertex_points_ += at_vertex ? 1 : 0;
@@ -211,6 +213,7 @@ void Remover::commit(const Replacement& r, const Eigen::Vector3d& point, int pas
     w_.d1[3 * a + size_t(k)] = float(r.d1(k));
     w_.d2[3 * a + size_t(k)] = float(r.d2(k));
   }
+  for (int id : ids_) update_weight(w_, id);
   if (tracker_.active()) tracker_.commit(ids_);
 }
 

@@ -13,7 +13,7 @@
 
 namespace isoform::reduce {
 
-enum class Outcome { Removed, Corona, HalfPlane, Flip, Nonmanifold, Boundary, Tolerance, RmsStop };
+enum class Outcome { Removed, Corona, HalfPlane, Flip, Nonmanifold, Boundary, Tolerance, RmsStop, Deferred };
 
 class Remover {
  public:
@@ -23,6 +23,7 @@ class Remover {
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
+  Tracker& tracker() { return tracker_; }
 
  private:
   Outcome place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& point, bool* at_vertex);

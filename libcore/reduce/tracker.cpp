@@ -34,8 +34,8 @@ double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& 
   return (x - (a + ab * v + ac * w)).norm();
 }
 
-Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance)
-    : distance_(distance_tolerance), rms_(rms_tolerance) {
+Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance, bool measure)
+    : distance_(distance_tolerance), rms_(rms_tolerance), measure_(measure) {
   if (!active()) return;
   const size_t nv = w.pos.size(), nt = w.tri.size();
   original_ = w.pos;
@@ -48,6 +48,7 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
   head_.assign(nt, -1);
   next_.assign(nv, -1);
   err2_.assign(nv, 0.0);
+  touched_.assign(nv, 0);
   for (size_t v = 0; v < nv; ++v) {
     if (w.vfaces[v].empty()) continue;
     const int f = w.vfaces[v].front();
@@ -75,85 +76,14 @@ double height_above(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Ei
   return (1 - l1 - l2) * a(2) + l1 * b(2) + l2 * c(2);
 }
 
-// The barycentric weight of corner a for x in triangle (a, b, c), in (x, y).
-double barycentric_xy(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                      const Eigen::Vector3d& c) {
-  const double det = (b(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (b(1) - a(1));
-  if (!(std::abs(det) > 0)) return 0;
-  const double wb = ((x(0) - a(0)) * (c(1) - a(1)) - (c(0) - a(0)) * (x(1) - a(1))) / det;
-  const double wc = ((b(0) - a(0)) * (x(1) - a(1)) - (x(0) - a(0)) * (b(1) - a(1))) / det;
-  return 1 - wb - wc;
-}
-
 }  // namespace
 
-void Tracker::refine(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, const Eigen::Vector3d& direction,
-                     Eigen::Vector3d& point) {
-  const int pv = p.a[0];
-  auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
-  double num = 0, den = 0, largest = 0;
-  assigned_.clear();
-  assigned_valid_ = true;
-  for (int f : p.faces)
-    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
-      const Eigen::Vector3d& x = original_[size_t(v)];
-      // The new face x lies on (graph: above; else: nearest) and x's
-      // barycentric weight of p there.
-      double best = -std::numeric_limits<double>::infinity(), weight = 0, residual = 0, slope = 0;
-      int chosen = 0;
-      for (size_t i = 0; i < faces.tri.size(); ++i) {
-        const auto& t = faces.tri[i];
-        const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
-        const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
-        double score = 0, lp = 0, r = 0, s = 0;
-        if (rms_ > 0) {
-          double inside = 0;
-          const double z = height_above(x, a, b, c, &inside);
-          score = inside;
-          if (k >= 0) {
-            Eigen::Vector3d lifted = x;
-            lifted(2) = z;
-            lp = barycentric_xy(lifted, P(t[size_t(k)]), P(t[size_t((k + 1) % 3)]), P(t[size_t((k + 2) % 3)]));
-          }
-          r = x(2) - z;
-          s = lp * direction(2);
-        } else {
-          score = -point_triangle_distance(x, a, b, c);
-          const Eigen::Vector3d nn = (b - a).cross(c - a);
-          const double area2 = nn.squaredNorm();
-          if (!(area2 > 0)) continue;
-          const Eigen::Vector3d n = nn / std::sqrt(area2);
-          if (k >= 0) {
-            const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - P(t[size_t((k + 1) % 3)])).cross(x - P(t[size_t((k + 1) % 3)]));
-            lp = std::clamp(opp.dot(n) / std::sqrt(area2), 0.0, 1.0);
-          }
-          r = (x - a).dot(n);
-          s = lp * direction.dot(n);
-        }
-        if (score > best) {
-          best = score;
-          chosen = int(i);
-          weight = lp;
-          residual = r;
-          slope = s;
-        }
-      }
-      assigned_.push_back(chosen);
-      if (weight <= 0) continue;
-      num += slope * residual;
-      den += slope * slope;
-      largest = std::max(largest, std::abs(residual));
-    }
-  // NOTE: points far from p (small weights) alone make the step ill-posed:
-  // no step below the weight of one point at p's half-way, and none longer
-  // than twice the largest residual.
-  if (!(den >= 0.25)) return;
-  point += std::clamp(num / den, -2 * largest, 2 * largest) * direction;
-}
-
 bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
-                    bool* rms_stop) {
+                    bool* rms_stop, bool* deferred) {
   *rms_stop = false;
+  *deferred = false;
+  double local_max2 = 0;
+  long long fresh = 0;
   pending_vertex_.clear();
   pending_face_.clear();
   pending_err2_.clear();
@@ -166,6 +96,8 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
   int near_vertex[kNear] = {-1, -1, -1, -1};
   double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
   const bool reuse = assigned_valid_;
+  // An infinite tolerance only keeps the assignment, unless asked to measure.
+  const bool distances = distance_ > 0 && (std::isfinite(distance_) || measure_);
   assigned_valid_ = false;
   size_t index = 0;
   for (int f : p.faces)
@@ -175,10 +107,12 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       // after refine() the face it chose is kept (in graph mode p's (x, y)
       // did not move, so it is the same face; else the distance to it is
       // still an upper bound of the distance to the reduced surface).
-      int best = 0;
+      int best = reuse ? assigned_[index] : 0;
       double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
       const size_t first = reuse ? size_t(assigned_[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
-      for (size_t i = first; i < last; ++i) {
+      // Without a bound or a measurement the kept face is all that is needed.
+      const bool evaluate = rms_ > 0 || distances || !reuse;
+      for (size_t i = first; evaluate && i < last; ++i) {
         const auto& t = faces.tri[i];
         double score = 0, err2 = 0, d = 0;
         if (rms_ > 0) {
@@ -195,11 +129,11 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
           nearest = d;
         }
       }
-      if (rms_ > 0 && distance_ > 0) {
+      if (rms_ > 0 && distances) {
         nearest = std::numeric_limits<double>::infinity();
         for (const auto& t : faces.tri) nearest = std::min(nearest, point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2])));
       }
-      if (distance_ > 0) {
+      if (distances) {
         if (nearest > distance_) return false;
         pending_max_ = std::max(pending_max_, nearest);
         double d2 = (x - point).squaredNorm();
@@ -213,6 +147,8 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       if (rms_ > 0) {
         pending_sum_ += best_err2 - err2_[size_t(v)];
         pending_err2_.push_back(best_err2);
+        local_max2 = std::max(local_max2, best_err2);
+        fresh += touched_[size_t(v)] ? 0 : 1;
       }
       pending_vertex_.push_back(v);
       pending_face_.push_back(best);
@@ -232,6 +168,14 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
     if (near_original > distance_) return false;
     pending_max_ = std::max(pending_max_, near_original);
   }
+  // The guard: no knot of this removal farther than guard_ times the RMS of
+  // the knots already moved off (their typical error so far).
+  if (rms_ > 0 && guard_ > 0 && sum_err2_ > 0 && touched_count_ > 0 &&
+      local_max2 > guard_ * guard_ * (sum_err2_ / double(touched_count_))) {
+    *deferred = true;
+    return false;
+  }
+  pending_touched_ = fresh;
   if (rms_ > 0 && std::sqrt(std::max(0.0, pending_sum_) / double(original_.size())) > rms_) {
     *rms_stop = true;
     return false;
@@ -245,9 +189,13 @@ void Tracker::commit(const std::vector<int>& ids) {
     const int v = pending_vertex_[i], f = ids[size_t(pending_face_[i])];
     next_[size_t(v)] = head_[size_t(f)];
     head_[size_t(f)] = v;
-    if (rms_ > 0) err2_[size_t(v)] = pending_err2_[i];
+    if (rms_ > 0) {
+      err2_[size_t(v)] = pending_err2_[i];
+      touched_[size_t(v)] = 1;
+    }
   }
   sum_err2_ = pending_sum_;
+  touched_count_ += pending_touched_;
   max_distance_ = pending_max_;
 }
 

@@ -14,30 +14,41 @@
 
 #include <Eigen/Core>
 
+#include "assign.h"
 #include "retriangulate.h"
 
 namespace isoform::reduce {
 
 class Tracker {
  public:
-  // Call on the input, before any removal.
-  Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance);
+  // Call on the input, before any removal. An infinite distance tolerance
+  // tracks the assignment only (for refine); `measure` also computes the
+  // tracked distances then (for max_distance).
+  Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance, bool measure);
   bool active() const { return distance_ > 0 || rms_ > 0; }
 
   // Moves the new point along `direction` (unit) to the least-squares best
   // place for the original vertices under the platelet's faces, one
   // Gauss-Newton step on their distances to the new faces (graph mode: their
-  // height errors, exactly). Beyond the seed: its point lies on the fitted
+  // height errors, exactly). Each vertex goes to the new face above it
+  // (graph), the nearest (finite distance tolerance) or the one its
+  // projection onto T's plane (frame) falls in (assign.h). Beyond the seed: its point lies on the fitted
   // surface, and a piecewise linear surface through points on a curved
   // surface is on one side of it.
-  void refine(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, const Eigen::Vector3d& direction,
-              Eigen::Vector3d& point);
+  void refine(const WorkMesh& w, const Platelet& p, const Frame& frame, const LocalFaces& faces,
+              const Eigen::Vector3d& direction, Eigen::Vector3d& point);
 
   // Checks the removal whose old faces are p.faces and new faces `faces`
   // with p at `point`. False when a tolerance would be exceeded; *rms_stop
-  // is set when it is the RMS one (Remark 5.10: the reduction stops).
+  // is set when it is the RMS one (Remark 5.10: the reduction stops),
+  // *deferred when it is the guard (set_guard).
   bool check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
-             bool* rms_stop);
+             bool* rms_stop, bool* deferred);
+  // Graph mode, beyond the seed: refuse a removal that would take one of its
+  // knots farther than `factor` times the RMS height error of the knots
+  // moved off so far (0: off). The caller relaxes it when a pass stalls.
+  void set_guard(double factor) { guard_ = factor; }
+  double guard() const { return guard_; }
   // Applies the last successful check; ids[i] is the face id given to faces[i].
   void commit(const std::vector<int>& ids);
 
@@ -46,12 +57,16 @@ class Tracker {
 
  private:
   double distance_, rms_;
+  bool measure_;
   std::vector<Eigen::Vector3d> original_;
   std::vector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
   std::vector<std::array<int, 3>> original_tri_;
   std::vector<int> head_, next_;  // current face -> its original vertices (linked)
   std::vector<double> err2_;      // per original vertex: squared height error (graph mode)
   double sum_err2_ = 0, max_distance_ = 0;
+  std::vector<uint8_t> touched_;  // per original vertex: its error was ever computed (graph mode)
+  long long touched_count_ = 0, pending_touched_ = 0;
+  double guard_ = 0;
   // The pending assignment of the last check.
   std::vector<int> pending_vertex_, pending_face_;
   std::vector<double> pending_err2_;
@@ -59,6 +74,7 @@ class Tracker {
   // The faces refine() handed the vertices to, reused by the next check().
   std::vector<int> assigned_;
   bool assigned_valid_ = false;
+  std::vector<ProjectedFace> projected_;  // refine's scratch
 };
 
 double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "../topology.h"
+#include "queue.h"
 
 namespace isoform::reduce {
 
@@ -54,6 +55,7 @@ WorkMesh build_work_mesh(const Mesh& mesh) {
   w.d2 = c.d2;
   w.flags = c.flags;
   w.normal = mesh.normals;
+  compute_weights(w);
   return w;
 }
 

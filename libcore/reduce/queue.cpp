@@ -1,0 +1,58 @@
+// The passes' queue (see queue.h).
+#include "queue.h"
+
+#include <algorithm>
+#include <tuple>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "weights.h"
+
+namespace isoform::reduce {
+namespace {
+
+bool lighter(const QueueEntry& a, const QueueEntry& b) { return std::tie(a.weight, a.face) < std::tie(b.weight, b.face); }
+
+bool current(const WorkMesh& w, const QueueEntry& e) {
+  return w.face_alive[size_t(e.face)] && w.face_stamp[size_t(e.face)] == e.stamp;
+}
+
+}  // namespace
+
+void update_weight(WorkMesh& w, int f) {
+  const auto& t = w.tri[size_t(f)];
+  const double sigma = angle_weight(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
+  w.weight[size_t(f)] = triangle_weight(sigma, w.absolute[size_t(t[0])], w.absolute[size_t(t[1])],
+                                        w.absolute[size_t(t[2])]);
+}
+
+void compute_weights(WorkMesh& w) {
+  w.weight.assign(w.tri.size(), 0.0);
+  tbb::parallel_for(size_t(0), w.tri.size(), [&](size_t f) { update_weight(w, int(f)); });
+}
+
+const std::vector<QueueEntry>& PassQueue::next_pass(const WorkMesh& w, int pass) {
+  if (pass == 1) {
+    order_.clear();
+    for (size_t f = 0; f < w.tri.size(); ++f)
+      if (w.face_alive[f]) order_.push_back({w.weight[f], int(f), w.face_stamp[f]});
+    tbb::parallel_sort(order_.begin(), order_.end(), lighter);
+    return order_;
+  }
+  // The faces of the last pass's removals that are still there, sorted.
+  fresh_.clear();
+  for (size_t f = 0; f < w.tri.size(); ++f)
+    if (w.face_alive[f] && w.face_pass[f] == pass - 1) fresh_.push_back({w.weight[f], int(f), w.face_stamp[f]});
+  tbb::parallel_sort(fresh_.begin(), fresh_.end(), lighter);
+  // The older faces keep their order; the changed and removed ones drop out.
+  order_.erase(std::remove_if(order_.begin(), order_.end(),
+                              [&](const QueueEntry& e) { return !current(w, e) || w.face_pass[size_t(e.face)] == pass - 1; }),
+               order_.end());
+  merged_.resize(order_.size() + fresh_.size());
+  std::merge(order_.begin(), order_.end(), fresh_.begin(), fresh_.end(), merged_.begin(), lighter);
+  order_.swap(merged_);
+  return order_;
+}
+
+}  // namespace isoform::reduce

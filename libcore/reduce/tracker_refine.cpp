@@ -1,0 +1,86 @@
+// The refined point of the reduction (Tracker::refine, see tracker.h).
+#include <algorithm>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+#include "tracker.h"
+
+namespace isoform::reduce {
+namespace {
+
+// The new face nearest to x in 3D (degenerate faces never), the first of equals.
+template <class Pos>
+int nearest_face(const LocalFaces& faces, const Eigen::Vector3d& x, Pos&& P) {
+  double best = std::numeric_limits<double>::infinity();
+  int chosen = 0;
+  for (size_t i = 0; i < faces.tri.size(); ++i) {
+    const auto& t = faces.tri[i];
+    const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
+    if (!((b - a).cross(c - a).squaredNorm() > 0)) continue;
+    const double d = point_triangle_distance(x, a, b, c);
+    if (d < best) {
+      best = d;
+      chosen = int(i);
+    }
+  }
+  return chosen;
+}
+
+}  // namespace
+
+void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, const LocalFaces& faces,
+                     const Eigen::Vector3d& direction, Eigen::Vector3d& point) {
+  const int pv = p.a[0];
+  auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
+  const bool graph = rms_ > 0, nearest = !graph && std::isfinite(distance_);
+  Projection projection;
+  if (!graph) projection.frame = &frame;
+  if (!nearest) project_faces(faces.tri, projection, P, projected_);
+  double num = 0, den = 0, largest = 0;
+  assigned_.clear();
+  assigned_valid_ = true;
+  for (int f : p.faces)
+    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
+      const Eigen::Vector3d& x = original_[size_t(v)];
+      // The new face x lies on (graph: above; under a distance tolerance: the
+      // nearest; else: the one its projection onto P falls in) and x's
+      // barycentric weight of p there.
+      double l[3] = {1, 0, 0};
+      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(projected_, projection(x), l);
+      assigned_.push_back(chosen);
+      const auto& t = faces.tri[size_t(chosen)];
+      const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
+      const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
+      double weight = 0, residual = 0, slope = 0;
+      if (graph) {
+        weight = k >= 0 ? l[k] : 0;
+        residual = x(2) - (l[0] * a(2) + l[1] * b(2) + l[2] * c(2));
+        slope = weight * direction(2);
+      } else {
+        const Eigen::Vector3d nn = (b - a).cross(c - a);
+        const double area2 = nn.squaredNorm();
+        if (!(area2 > 0)) continue;
+        const Eigen::Vector3d n = nn / std::sqrt(area2);
+        if (k >= 0) {
+          const Eigen::Vector3d& y1 = P(t[size_t((k + 1) % 3)]);
+          const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - y1).cross(x - y1);
+          weight = std::clamp(opp.dot(n) / std::sqrt(area2), 0.0, 1.0);
+        }
+        residual = (x - a).dot(n);
+        slope = weight * direction.dot(n);
+      }
+      if (weight <= 0) continue;
+      num += slope * residual;
+      den += slope * slope;
+      largest = std::max(largest, std::abs(residual));
+    }
+  // NOTE: points far from p (small weights) alone make the step ill-posed:
+  // no step below the weight of one point at p's half-way, and none longer
+  // than twice the largest residual.
+  if (!(den >= 0.25)) return;
+  point += std::clamp(num / den, -2 * largest, 2 * largest) * direction;
+}
+
+}  // namespace isoform::reduce
