@@ -36,11 +36,19 @@ Rgb sequential(double t) {
   return lerp_map(stops, 5, t);
 }
 
-double percentile(std::vector<float> v, double p) {
-  if (v.empty()) return 0.0;
-  const size_t k = std::min(v.size() - 1, size_t(p * double(v.size() - 1) + 0.5));
-  std::nth_element(v.begin(), v.begin() + long(k), v.end());
-  return v[k];
+// The p-th and q-th percentiles (p <= q) of v, which is reordered.
+void percentiles(std::vector<float>& v, double p, double q, double* at_p, double* at_q) {
+  if (v.empty()) {
+    *at_p = *at_q = 0.0;
+    return;
+  }
+  auto rank = [&](double f) { return std::min(v.size() - 1, size_t(f * double(v.size() - 1) + 0.5)); };
+  const size_t kp = rank(p), kq = rank(q);
+  std::nth_element(v.begin(), v.begin() + long(kq), v.end());
+  *at_q = v[kq];
+  // Everything before kq is at most v[kq]: the kp-th smallest is among it.
+  if (kp < kq) std::nth_element(v.begin(), v.begin() + long(kp), v.begin() + long(kq));
+  *at_p = v[kp];
 }
 
 bool usable(uint8_t flags) { return !(flags & (kCurvatureIsolated | kCurvatureFailed)); }
@@ -62,12 +70,12 @@ const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q
 
 void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi) {
   const std::vector<float>& values = curvature_values(mesh, q);
-  std::vector<float> kept;
-  kept.reserve(values.size());
+  std::vector<float> kept(values.size());
+  size_t count = 0;
   for (size_t v = 0; v < values.size(); ++v)
-    if (usable(mesh.curvature.flags[v])) kept.push_back(values[v]);
-  *lo = percentile(kept, 0.02);
-  *hi = percentile(kept, 0.98);
+    if (usable(mesh.curvature.flags[v])) kept[count++] = values[v];
+  kept.resize(count);
+  percentiles(kept, 0.02, 0.98, lo, hi);
   if (q != CurvatureQuantity::Absolute) {
     const double m = std::max(std::abs(*lo), std::abs(*hi));
     *lo = -m;

@@ -13,12 +13,16 @@
 #include <cmath>
 
 #include "small_ldlt.h"
+#include "small_ldlt_lanes.h"
 
 namespace isoform {
 namespace {
 
-// Two points at a time, one in each lane; the lanes are added at the end.
-typedef double Pair __attribute__((vector_size(16)));
+// Four points at a time, one in each lane; the lanes are added at the end.
+// Without AVX the compiler splits each operation into two SSE2 ones, lane by
+// lane, so both builds of accumulate() give the same bits (no fused
+// multiply-add in either: AVX alone has none).
+typedef double Quad __attribute__((vector_size(32)));
 
 // A model's monomials u^i v^j: degrees lo to hi, within a degree by
 // increasing power of v (first the linear terms when lo is 1, then u^2, u v,
@@ -36,21 +40,43 @@ struct Model {
   }
 };
 
+// Entry (r, c) of the normal equations is moment at[r][c].
+template <int Lo, int Hi>
+struct GramIndex {
+  int at[Model<Lo, Hi>::kTerms][Model<Lo, Hi>::kTerms];
+  GramIndex() {
+    int eu[Model<Lo, Hi>::kTerms], ev[Model<Lo, Hi>::kTerms], n = 0;
+    for (int deg = Lo; deg <= Hi; ++deg)
+      for (int k = 0; k <= deg; ++k, ++n) {
+        eu[n] = deg - k;
+        ev[n] = k;
+      }
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) at[r][c] = Model<Lo, Hi>::moment(eu[r] + eu[c], ev[r] + ev[c]);
+  }
+};
+
 // moment[k] = sum of u^a v^b, rhs[k] = sum of d u^i v^j over the scaled
 // points, fully unrolled over the model's terms.
 template <int Lo, int Hi>
-void accumulate(const double* u, const double* v, const double* d, int count, double inv,
-                double (&moment)[Model<Lo, Hi>::kMoments], double (&rhs)[Model<Lo, Hi>::kTerms]) {
+inline __attribute__((always_inline)) void accumulate_body(const double* u, const double* v, const double* d,
+                                                           int count, double inv,
+                                                           double (&moment)[Model<Lo, Hi>::kMoments],
+                                                           double (&rhs)[Model<Lo, Hi>::kTerms]) {
   constexpr int kTop = Model<Lo, Hi>::kTop, kMoments = Model<Lo, Hi>::kMoments, kTerms = Model<Lo, Hi>::kTerms;
-  Pair m[kMoments] = {}, r[kTerms] = {};
-  for (int j = 0; j < count; j += 2) {
-    // An odd count pads the second lane with the origin, which adds 0 to
-    // every sum (no moment or term has degree 0).
-    const bool two = j + 1 < count;
-    const Pair x = {u[j] * inv, two ? u[j + 1] * inv : 0.0}, y = {v[j] * inv, two ? v[j + 1] * inv : 0.0};
-    const Pair h = {d[j], two ? d[j + 1] : 0.0};
-    Pair pu[kTop + 1], pv[kTop + 1];
-    pu[0] = pv[0] = Pair{1.0, 1.0};
+  Quad m[kMoments] = {}, r[kTerms] = {};
+  for (int j = 0; j < count; j += 4) {
+    // A count that is not a multiple of 4 pads the last lanes with the
+    // origin, which adds 0 to every sum (no moment or term has degree 0).
+    Quad x, y, h;
+    for (int l = 0; l < 4; ++l) {
+      const bool in = j + l < count;
+      x[l] = in ? u[j + l] * inv : 0.0;
+      y[l] = in ? v[j + l] * inv : 0.0;
+      h[l] = in ? d[j + l] : 0.0;
+    }
+    Quad pu[kTop + 1], pv[kTop + 1];
+    pu[0] = pv[0] = Quad{1.0, 1.0, 1.0, 1.0};
     pu[1] = x;
     pv[1] = y;
 #pragma GCC unroll 16
@@ -69,48 +95,46 @@ void accumulate(const double* u, const double* v, const double* d, int count, do
 #pragma GCC unroll 16
       for (int b = 0; b <= s; ++b, ++k) r[k] += h * (pu[s - b] * pv[b]);
   }
-  for (int k = 0; k < kMoments; ++k) moment[k] = m[k][0] + m[k][1];
-  for (int k = 0; k < kTerms; ++k) rhs[k] = r[k][0] + r[k][1];
+  for (int k = 0; k < kMoments; ++k) moment[k] = (m[k][0] + m[k][1]) + (m[k][2] + m[k][3]);
+  for (int k = 0; k < kTerms; ++k) rhs[k] = (r[k][0] + r[k][1]) + (r[k][2] + r[k][3]);
 }
 
+// The scale and the moments of one point set; false (no fit) with fewer
+// points than terms or no usable scale.
 template <int Lo, int Hi>
-HeightFit fit(const double* u, const double* v, const double* d, int count, double min_rcond) {
-  using M = Model<Lo, Hi>;
-  constexpr int kTerms = M::kTerms;
-  HeightFit out;
-  if (count < kTerms) return out;
+inline __attribute__((always_inline)) bool prepare(const double* u, const double* v, const double* d, int count,
+                                                   double& scale, double (&moment)[Model<Lo, Hi>::kMoments],
+                                                   double (&rhs)[Model<Lo, Hi>::kTerms]) {
+  if (count < Model<Lo, Hi>::kTerms) return false;
   // Coordinates scaled by the largest |(u, v)|, so the conditioning check
   // does not depend on the mesh's size.
   double r2 = 0.0;
   for (int j = 0; j < count; ++j) r2 = std::max(r2, u[j] * u[j] + v[j] * v[j]);
-  const double scale = std::sqrt(r2);
-  if (!(scale > 0.0) || !std::isfinite(scale)) return out;
-  double moment[M::kMoments], rhs[kTerms];
-  accumulate<Lo, Hi>(u, v, d, count, 1.0 / scale, moment, rhs);
-  // The exponents of each term, in the model's order.
-  int eu[kTerms], ev[kTerms], n = 0;
-  for (int deg = Lo; deg <= Hi; ++deg)
-    for (int k = 0; k <= deg; ++k, ++n) {
-      eu[n] = deg - k;
-      ev[n] = k;
-    }
-  double ata[kTerms][kTerms];
-  for (int r = 0; r < kTerms; ++r)
-    for (int c = 0; c <= r; ++c) ata[r][c] = moment[M::moment(eu[r] + eu[c], ev[r] + ev[c])];
-  SmallLdlt<kTerms> ldlt;
-  const bool factored = ldlt.factor(ata);
-  double hi = 0.0, lo = ldlt.d(0);
-  for (int i = 0; i < kTerms; ++i) {
-    hi = std::max(hi, std::abs(ldlt.d(i)));
-    lo = std::min(lo, ldlt.d(i));
+  scale = std::sqrt(r2);
+  if (!(scale > 0.0) || !std::isfinite(scale)) return false;
+  accumulate_body<Lo, Hi>(u, v, d, count, 1.0 / scale, moment, rhs);
+  return true;
+}
+
+// rcond from D; false where the fit is not to be trusted.
+template <int N, class D>
+inline __attribute__((always_inline)) bool conditioned(D d, double min_rcond, HeightFit& out) {
+  double hi = 0.0, lo = d(0);
+  for (int i = 0; i < N; ++i) {
+    hi = std::max(hi, std::abs(d(i)));
+    lo = std::min(lo, d(i));
   }
   out.rcond = hi > 0.0 ? lo / hi : 0.0;
   // A zero or negative pivot gives rcond <= 0, below any useful min_rcond.
-  if (!factored || !(lo > 0.0) || !(out.rcond >= min_rcond)) return out;
-  double c[kTerms];
-  ldlt.solve(rhs, c);
+  return lo > 0.0 && out.rcond >= min_rcond;
+}
+
+// The derivatives from the solution c of the scaled normal equations.
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) void finish(const double (&c)[Model<Lo, Hi>::kTerms], double scale,
+                                                  HeightFit& out) {
   for (double x : c)
-    if (!std::isfinite(x)) return out;
+    if (!std::isfinite(x)) return;
   // Back from the scaled coordinates: a coefficient of u^i v^j carries
   // scale^-(i+j). Linear terms come first (u, v), then u^2, u v, v^2.
   const int q = Lo == 1 ? 2 : 0;
@@ -123,7 +147,113 @@ HeightFit fit(const double* u, const double* v, const double* d, int count, doub
   out.fuv = c[q + 1] / s2;
   out.fvv = 2.0 * c[q + 2] / s2;
   out.ok = true;
+}
+
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) HeightFit fit_body(const double* u, const double* v, const double* d,
+                                                         int count, double min_rcond) {
+  using M = Model<Lo, Hi>;
+  constexpr int kTerms = M::kTerms;
+  HeightFit out;
+  double scale, moment[M::kMoments], rhs[kTerms];
+  if (!prepare<Lo, Hi>(u, v, d, count, scale, moment, rhs)) return out;
+  static const GramIndex<Lo, Hi> index;
+  SmallLdlt<kTerms> ldlt;
+  const bool factored = ldlt.factor(moment, index.at);
+  if (!conditioned<kTerms>([&](int i) { return ldlt.d(i); }, min_rcond, out) || !factored) return out;
+  double c[kTerms];
+  ldlt.solve(rhs, c);
+  finish<Lo, Hi>(c, scale, out);
   return out;
+}
+
+// fit_body for lanes point sets (1 to 4) at once. A lane whose matrix the
+// four-lane factorisation cannot take (a zero or non-finite pivot) is fitted
+// again alone, so every lane's result is fit_body's, bit for bit.
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) void fit_lanes_body(const double* const (&u)[4], const double* const (&v)[4],
+                                                          const double* const (&d)[4], const int (&count)[4],
+                                                          int lanes, double min_rcond, HeightFit (&out)[4]) {
+  using M = Model<Lo, Hi>;
+  constexpr int kTerms = M::kTerms;
+  double scale[4], moment[4][M::kMoments], rhs[4][kTerms];
+  bool live[4] = {false, false, false, false};
+  int any = -1;
+  for (int l = 0; l < 4; ++l) {
+    out[l] = HeightFit{};
+    live[l] = l < lanes && prepare<Lo, Hi>(u[l], v[l], d[l], count[l], scale[l], moment[l], rhs[l]);
+    if (live[l]) any = l;
+  }
+  if (any < 0) return;
+  // Lanes without a fit repeat a live lane's matrix (and are not read).
+  const double* values[4];
+  const double* b[4];
+  for (int l = 0; l < 4; ++l) {
+    values[l] = moment[live[l] ? l : any];
+    b[l] = rhs[live[l] ? l : any];
+  }
+  static const GramIndex<Lo, Hi> index;
+  SmallLdltLanes<kTerms> ldlt;
+  bool factored[4];
+  ldlt.factor(values, index.at, factored);
+  double c[4][kTerms];
+  double* x[4] = {c[0], c[1], c[2], c[3]};
+  ldlt.solve(b, x);
+  for (int l = 0; l < lanes; ++l) {
+    if (!live[l]) continue;
+    if (!factored[l]) {
+      out[l] = fit_body<Lo, Hi>(u[l], v[l], d[l], count[l], min_rcond);
+      continue;
+    }
+    if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, out[l])) finish<Lo, Hi>(c[l], scale[l], out[l]);
+  }
+}
+
+template <int Lo, int Hi>
+HeightFit fit_plain(const double* u, const double* v, const double* d, int count, double min_rcond) {
+  return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
+}
+
+// The same code built for AVX where the build's baseline lacks it, chosen at
+// run time: four lanes in one instruction instead of two, the same bits.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__AVX__)
+#define ISOFORM_AVX_CLONE 1
+template <int Lo, int Hi>
+__attribute__((target("avx"))) HeightFit fit_avx(const double* u, const double* v, const double* d, int count,
+                                                 double min_rcond) {
+  return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
+}
+template <int Lo, int Hi>
+__attribute__((target("avx"))) void fit_lanes_avx(const double* const (&u)[4], const double* const (&v)[4],
+                                                  const double* const (&d)[4], const int (&count)[4], int lanes,
+                                                  double min_rcond, HeightFit (&out)[4]) {
+  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+}
+#endif
+
+template <int Lo, int Hi>
+void fit_lanes_plain(const double* const (&u)[4], const double* const (&v)[4], const double* const (&d)[4],
+                     const int (&count)[4], int lanes, double min_rcond, HeightFit (&out)[4]) {
+  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+}
+
+template <int Lo, int Hi>
+void fit_lanes(const double* const (&u)[4], const double* const (&v)[4], const double* const (&d)[4],
+               const int (&count)[4], int lanes, double min_rcond, HeightFit (&out)[4]) {
+#ifdef ISOFORM_AVX_CLONE
+  static const bool avx = __builtin_cpu_supports("avx");
+  if (avx) return fit_lanes_avx<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+#endif
+  fit_lanes_plain<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+}
+
+template <int Lo, int Hi>
+HeightFit fit(const double* u, const double* v, const double* d, int count, double min_rcond) {
+#ifdef ISOFORM_AVX_CLONE
+  static const bool avx = __builtin_cpu_supports("avx");
+  if (avx) return fit_avx<Lo, Hi>(u, v, d, count, min_rcond);
+#endif
+  return fit_plain<Lo, Hi>(u, v, d, count, min_rcond);
 }
 
 }  // namespace
@@ -147,6 +277,17 @@ HeightFit fit_height(FitModel model, const double* u, const double* v, const dou
     case FitModel::Quartic: return fit<1, 4>(u, v, d, count, min_rcond);
   }
   return HeightFit{};
+}
+
+void fit_height_lanes(FitModel model, const double* const (&u)[4], const double* const (&v)[4],
+                      const double* const (&d)[4], const int (&count)[4], int lanes, HeightFit (&out)[4],
+                      double min_rcond) {
+  switch (model) {
+    case FitModel::SeedQuadratic: return fit_lanes<2, 2>(u, v, d, count, lanes, min_rcond, out);
+    case FitModel::Quadric: return fit_lanes<1, 2>(u, v, d, count, lanes, min_rcond, out);
+    case FitModel::Cubic: return fit_lanes<1, 3>(u, v, d, count, lanes, min_rcond, out);
+    case FitModel::Quartic: return fit_lanes<1, 4>(u, v, d, count, lanes, min_rcond, out);
+  }
 }
 
 }  // namespace isoform

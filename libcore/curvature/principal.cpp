@@ -28,9 +28,12 @@ PrincipalCurvatures principal_curvatures(const HeightFit& f, const Eigen::Vector
   pc.normal = (n - f.fu * b1 - f.fv * b2) / l;
   // The eigenvector of W for k1 from whichever row of (W - k1 I) is larger;
   // at an umbilic every direction is principal.
-  const double r1 = std::hypot(w11 - pc.k1, w12), r2 = std::hypot(w21, w22 - pc.k1);
+  // (Squared lengths: the comparisons are those of the lengths.)
+  const double a1 = w11 - pc.k1, a2 = w22 - pc.k1;
+  const double r1 = a1 * a1 + w12 * w12, r2 = w21 * w21 + a2 * a2;
+  const double tiny = 1e-12 * (std::abs(pc.k1) + std::abs(pc.k2) + 1e-300);
   Eigen::Vector2d e;
-  if (std::max(r1, r2) <= 1e-12 * (std::abs(pc.k1) + std::abs(pc.k2) + 1e-300))
+  if (std::max(r1, r2) <= tiny * tiny)
     e = {1.0, 0.0};
   else if (r1 >= r2)
     e = {w12, pc.k1 - w11};

@@ -5,10 +5,12 @@
 // NOTE: Eigen's LDLT is left-looking: step k pivots on the largest diagonal
 // entry among k..N-1, and those entries are still the matrix's own (each is
 // updated only at its own step). The pivot order therefore depends on the
-// diagonal alone. Here it is found first, the matrix permuted once, and the
-// factorisation done right-looking, whose inner loops are independent
-// updates of a row instead of the dot products (chains of dependent adds)
-// of the left-looking form: about three times faster at N = 14.
+// diagonal alone. Here it is found first, the matrix gathered once in that
+// order, and the factorisation done right-looking, whose inner loops are
+// independent updates of a row instead of the dot products (chains of
+// dependent adds) of the left-looking form. The matrix is read through an
+// index table (entry (r, c) is values[at[r][c]]), so a Gram matrix of
+// moments is permuted straight from its moments, with no branch on r >= c.
 #pragma once
 
 #include <cmath>
@@ -20,29 +22,33 @@ namespace isoform {
 template <int N>
 class SmallLdlt {
  public:
-  // Factors the lower triangle of a (the upper is not read). False at the
-  // first pivot that is zero or not finite (D is then incomplete).
-  bool factor(const double (&a)[N][N]) {
+  // Factors the symmetric matrix whose entry (r, c) is values[at[r][c]]
+  // (at symmetric). False at the first pivot that is zero or not finite (D
+  // is then incomplete).
+  bool factor(const double* values, const int (&at)[N][N]) {
     // Eigen's transpositions, applied to the diagonal: step k swaps k with
     // the first largest |diagonal| among k..N-1.
     double diag[N];
     for (int i = 0; i < N; ++i) {
-      diag[i] = a[i][i];
+      diag[i] = std::abs(values[at[i][i]]);
       order_[i] = i;
     }
-    for (int k = 0; k < N; ++k) {
+    for (int k = 0; k < N - 1; ++k) {
       int p = k;
-      for (int i = k + 1; i < N; ++i)
-        if (std::abs(diag[i]) > std::abs(diag[p])) p = i;
+      double best = diag[k];
+      for (int i = k + 1; i < N; ++i) {
+        const bool larger = diag[i] > best;
+        best = larger ? diag[i] : best;
+        p = larger ? i : p;
+      }
       std::swap(diag[k], diag[p]);
       std::swap(order_[k], order_[p]);
     }
     // m = P A P^T, lower triangle.
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j <= i; ++j) {
-        const int r = order_[i], c = order_[j];
-        m_[i][j] = r >= c ? a[r][c] : a[c][r];
-      }
+    for (int i = 0; i < N; ++i) {
+      const int* row = at[order_[i]];
+      for (int j = 0; j <= i; ++j) m_[i][j] = values[row[order_[j]]];
+    }
     for (int k = 0; k < N; ++k) {
       const double dk = m_[k][k];
       if (!(std::abs(dk) > 0.0) || !std::isfinite(dk)) {
@@ -57,7 +63,8 @@ class SmallLdlt {
       for (int i = k + 1; i < N; ++i) {
         const double l = w[i] * inv;
         m_[i][k] = l;
-        for (int j = k + 1; j <= i; ++j) m_[i][j] -= l * w[j];
+        double* row = m_[i];
+        for (int j = k + 1; j <= i; ++j) row[j] -= l * w[j];
       }
     }
     return true;
@@ -82,7 +89,7 @@ class SmallLdlt {
 
  private:
   double m_[N][N];
-  int order_[N];  // row i of the permuted matrix is row order_[i] of a
+  int order_[N];  // row i of the permuted matrix is row order_[i] of the input
 };
 
 }  // namespace isoform

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -72,13 +73,21 @@ void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progre
       return;
     }
     VertexFitScratch& s = scratch.local();
-    for (size_t v = range.begin(); v != range.end(); ++v) {
-      const VertexFitResult r = fit_vertex(mesh, rings, int32_t(v), options.method, options.extra_rings, s);
-      store(c, v, r);
-      if (!fitted_normals.empty() && !(r.flags & (kCurvatureIsolated | kCurvatureFailed)))
-        for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = float(r.curvature.normal(a));
-      else if (!fitted_normals.empty() && mesh.normals.size() == 3 * n)
-        for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = mesh.normals[3 * v + size_t(a)];
+    VertexFitResult group[4];
+    for (size_t first = range.begin(); first < range.end(); first += 4) {
+      // Four vertices at a time (fit_vertices); each result is the one
+      // fit_vertex gives, so the grouping cannot change a bit.
+      const int count = int(std::min<size_t>(4, range.end() - first));
+      fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
+      for (int i = 0; i < count; ++i) {
+        const size_t v = first + size_t(i);
+        const VertexFitResult& r = group[i];
+        store(c, v, r);
+        if (!fitted_normals.empty() && !(r.flags & (kCurvatureIsolated | kCurvatureFailed)))
+          for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = float(r.curvature.normal(a));
+        else if (!fitted_normals.empty() && mesh.normals.size() == 3 * n)
+          for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = mesh.normals[3 * v + size_t(a)];
+      }
     }
     progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
   };

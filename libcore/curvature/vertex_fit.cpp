@@ -86,20 +86,66 @@ bool frame_normal(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near,
 
 // Local coordinates (4.27) and signed heights (4.24) of the gathered points;
 // points that coincide with the vertex carry nothing and are left out.
-void local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
-                       const Vector3d& b2, const Vector3d& n, VertexFitScratch& s) {
-  const Vector3d o = point(mesh, v);
-  s.u.clear();
-  s.v.clear();
-  s.d.clear();
-  for (int32_t w : near) {
-    const Vector3d p = point(mesh, w) - o;
-    const double u = p.dot(b1), vv = p.dot(b2);
-    if (u == 0.0 && vv == 0.0) continue;
-    s.u.push_back(u);
-    s.v.push_back(vv);
-    s.d.push_back(p.dot(n));
+template <class Real>
+int local_coordinates(const Real* points, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+                      const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
+  if (s.u.size() < near.size()) {
+    s.u.resize(near.size());
+    s.v.resize(near.size());
+    s.d.resize(near.size());
   }
+  const Real* q = points + 3 * size_t(v);
+  const double ox = q[0], oy = q[1], oz = q[2];
+  double *pu = s.u.data(), *pv = s.v.data(), *pd = s.d.data();
+  int count = 0;
+  for (int32_t w : near) {
+    const Real* p = points + 3 * size_t(w);
+    const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
+    const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
+    if (u == 0.0 && vv == 0.0) continue;
+    pu[count] = u;
+    pv[count] = vv;
+    pd[count] = x * n(0) + y * n(1) + z * n(2);
+    ++count;
+  }
+  return count;
+}
+
+int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+                      const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
+  if (mesh.precise_points.size() == mesh.points.size())
+    return local_coordinates(mesh.precise_points.data(), v, near, b1, b2, n, s);
+  return local_coordinates(mesh.points.data(), v, near, b1, b2, n, s);
+}
+
+// Steps (i) to (iii) of one vertex: its flags, plan and frame, the platelet
+// gathered into scratch.rings.out. False for an isolated vertex (r is then
+// its result).
+struct Start {
+  Plan plan;
+  Vector3d n, b1, b2;
+};
+
+bool start_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, CurvatureMethod method, int extra_rings,
+                  VertexFitScratch& s, VertexFitResult& r, Start& st) {
+  if (rings.valence(v) == 0) {
+    r.flags = kCurvatureIsolated;
+    return false;
+  }
+  if (rings.nonmanifold(v)) r.flags |= kCurvatureNonmanifold;
+  st.plan = plan_of(method);
+  st.plan.rings += extra_rings;
+  st.plan.boundary_rings += extra_rings;
+  // The seed's method is kept as printed: no boundary treatment.
+  if (rings.on_boundary(v) && method != CurvatureMethod::Seed) {
+    r.flags |= kCurvatureBoundary;
+    st.plan.rings = st.plan.boundary_rings;
+  }
+  gather_rings(rings, v, st.plan.rings, s.rings);
+  if (!frame_normal(mesh, v, s.rings.out, st.n)) r.flags |= kCurvatureNormalRepaired;
+  st.b1 = st.n.unitOrthogonal();
+  st.b2 = st.n.cross(st.b1);
+  return true;
 }
 
 }  // namespace
@@ -107,31 +153,16 @@ void local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& 
 VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, CurvatureMethod method,
                            int extra_rings, VertexFitScratch& s) {
   VertexFitResult r;
-  if (rings.valence(v) == 0) {
-    r.flags = kCurvatureIsolated;
-    return r;
-  }
-  if (rings.nonmanifold(v)) r.flags |= kCurvatureNonmanifold;
-  Plan plan = plan_of(method);
-  plan.rings += extra_rings;
-  plan.boundary_rings += extra_rings;
-  // The seed's method is kept as printed: no boundary treatment.
-  if (rings.on_boundary(v) && method != CurvatureMethod::Seed) {
-    r.flags |= kCurvatureBoundary;
-    plan.rings = plan.boundary_rings;
-  }
-  const int widest = plan.rings + 2;
-  Vector3d n;
-  gather_rings(rings, v, plan.rings, s.rings);
-  if (!frame_normal(mesh, v, s.rings.out, n)) r.flags |= kCurvatureNormalRepaired;
-  const Vector3d b1 = n.unitOrthogonal(), b2 = n.cross(b1);
-  FitModel model = plan.model;
-  int ring_count = plan.rings;
+  Start st;
+  if (!start_vertex(mesh, rings, v, method, extra_rings, s, r, st)) return r;
+  const Vector3d &n = st.n, &b1 = st.b1, &b2 = st.b2;
+  const int widest = st.plan.rings + 2;
+  FitModel model = st.plan.model;
+  int ring_count = st.plan.rings;
   for (;;) {
-    local_coordinates(mesh, v, s.rings.out, b1, b2, n, s);
-    const int count = int(s.u.size());
+    const int count = local_coordinates(mesh, v, s.rings.out, b1, b2, n, s.points);
     if (count >= points_wanted(model)) {
-      const HeightFit fit = fit_height(model, s.u.data(), s.v.data(), s.d.data(), count);
+      const HeightFit fit = fit_height(model, s.points.u.data(), s.points.v.data(), s.points.d.data(), count);
       if (fit.ok) {
         r.curvature = principal_curvatures(fit, b1, b2, n);
         return r;
@@ -157,6 +188,50 @@ VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v
       return r;
     }
   }
+}
+
+void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
+                  int extra_rings, VertexFitScratch& s, VertexFitResult (&out)[4]) {
+  // Lane k of the side-by-side fit holds vertex first + vertex_of[k].
+  Start st[4];
+  int vertex_of[4], lanes = 0;
+  const double* u[4] = {};
+  const double* v[4] = {};
+  const double* d[4] = {};
+  int points[4] = {0, 0, 0, 0};
+  bool alone[4] = {false, false, false, false};
+  const FitModel model = plan_of(method).model;
+  for (int i = 0; i < count; ++i) {
+    const int32_t vertex = first + i;
+    out[i] = VertexFitResult{};
+    if (!start_vertex(mesh, rings, vertex, method, extra_rings, s, out[i], st[i])) continue;
+    PlateletPoints& p = s.lanes[lanes];
+    const int m = local_coordinates(mesh, vertex, s.rings.out, st[i].b1, st[i].b2, st[i].n, p);
+    if (m < points_wanted(model)) {
+      alone[i] = true;
+      continue;
+    }
+    u[lanes] = p.u.data();
+    v[lanes] = p.v.data();
+    d[lanes] = p.d.data();
+    points[lanes] = m;
+    vertex_of[lanes++] = i;
+  }
+  if (lanes > 0) {
+    HeightFit fit[4];
+    fit_height_lanes(model, u, v, d, points, lanes, fit);
+    for (int k = 0; k < lanes; ++k) {
+      const int i = vertex_of[k];
+      if (fit[k].ok)
+        out[i].curvature = principal_curvatures(fit[k], st[i].b1, st[i].b2, st[i].n);
+      else
+        alone[i] = true;
+    }
+  }
+  // What the first fit could not settle: fit_vertex from the start (its
+  // first fit fails the same way, and it goes on from there).
+  for (int i = 0; i < count; ++i)
+    if (alone[i]) out[i] = fit_vertex(mesh, rings, first + i, method, extra_rings, s);
 }
 
 }  // namespace isoform

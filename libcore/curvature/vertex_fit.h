@@ -11,9 +11,15 @@
 
 namespace isoform {
 
+// The local coordinates and heights of one platelet.
+struct PlateletPoints {
+  std::vector<double> u, v, d;
+};
+
 struct VertexFitScratch {
   RingScratch rings;
-  std::vector<double> u, v, d;
+  PlateletPoints points;
+  PlateletPoints lanes[4];  // fit_vertices: one per vertex of a group
 };
 
 struct VertexFitResult {
@@ -24,5 +30,12 @@ struct VertexFitResult {
 // extra_rings widens the method's platelet by that many rings everywhere.
 VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t vertex, CurvatureMethod method,
                            int extra_rings, VertexFitScratch& scratch);
+
+// fit_vertex for the vertices first .. first + count - 1 (count 1 to 4) into
+// out: the same results, bit for bit. Their first fits (the method's model
+// on its platelet, which nearly every vertex keeps) run side by side
+// (fit_height_lanes); a vertex that needs more goes through fit_vertex.
+void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
+                  int extra_rings, VertexFitScratch& scratch, VertexFitResult (&out)[4]);
 
 }  // namespace isoform

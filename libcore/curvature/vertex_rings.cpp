@@ -29,35 +29,54 @@ VertexRings::VertexRings(const Mesh& mesh) {
     }
   }
   // Each neighbour appears once per triangle on the edge to it: once on a
-  // boundary edge, twice inside, three or more on a non-manifold edge.
+  // boundary edge, twice inside, three or more on a non-manifold edge. The
+  // uses are counted in per-vertex stamps (seen[w] == v + 1: w already met
+  // around v), in one pass and without sorting; the ring keeps the order of
+  // first meeting, which depends on the triangle table alone.
   start_.assign(n + 1, 0);
   boundary_.assign(n, 0);
   nonmanifold_.assign(n, 0);
-  ring_.reserve(all.size() / 2 + n);
+  ring_.resize(all.size() / 2 + n);
+  std::vector<int32_t> seen(n, 0);
+  std::vector<uint8_t> uses(n, 0);
+  int64_t size = 0;
   for (size_t v = 0; v < n; ++v) {
-    auto b = all.begin() + start[v], e = all.begin() + start[v + 1];
-    std::sort(b, e);
-    int64_t distinct = 0, boundary_edges = 0;
-    for (auto it = b; it != e;) {
-      auto run = std::upper_bound(it, e, *it);
-      const auto uses = run - it;
-      if (uses == 1) ++boundary_edges;
-      if (uses > 2) nonmanifold_[v] = 1;
-      ring_.push_back(*it);
-      ++distinct;
-      it = run;
+    const int32_t tag = int32_t(v) + 1;
+    const int64_t first = size;
+    for (int64_t k = start[v]; k != start[v + 1]; ++k) {
+      const int32_t w = all[size_t(k)];
+      if (seen[size_t(w)] != tag) {
+        seen[size_t(w)] = tag;
+        uses[size_t(w)] = 1;
+        if (size_t(size) == ring_.size()) ring_.resize(ring_.size() * 2 + 16);
+        ring_[size_t(size++)] = w;
+      } else if (uses[size_t(w)] < 255) {
+        ++uses[size_t(w)];
+      }
     }
+    int64_t boundary_edges = 0;
+    for (int64_t k = first; k != size; ++k) {
+      const uint8_t u = uses[size_t(ring_[size_t(k)])];
+      boundary_edges += u == 1;
+      if (u > 2) nonmanifold_[v] = 1;
+    }
+    const int64_t distinct = size - first;
     // A single closed fan has as many neighbours as triangles; a single open
     // fan one more, with two boundary edges.
     const int64_t tris = triangles_at[v];
     if (boundary_edges > 0) boundary_[v] = 1;
     if (tris > 0 && !(boundary_edges == 0 && distinct == tris) && !(boundary_edges == 2 && distinct == tris + 1))
       nonmanifold_[v] = 1;
-    start_[v + 1] = int64_t(ring_.size());
+    start_[v + 1] = size;
   }
+  ring_.resize(size_t(size));
 }
 
 void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s) {
+  if (count == 1) {  // the one-ring itself: no search
+    s.out.assign(rings.ring_begin(v), rings.ring_end(v));
+    return;
+  }
   if (s.mark.size() != rings.vertex_count()) {
     s.mark.assign(rings.vertex_count(), 0);
     s.stamp = 0;
@@ -66,20 +85,31 @@ void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s
     std::fill(s.mark.begin(), s.mark.end(), 0);
     s.stamp = 1;
   }
+  const uint32_t stamp = s.stamp;
+  uint32_t* mark = s.mark.data();
   s.out.clear();
-  s.mark[size_t(v)] = s.stamp;
-  s.seeds.assign(1, v);
-  for (int r = 0; r < count; ++r) {
-    const size_t ring_start = s.out.size();
-    for (int32_t u : s.seeds)
+  if (count <= 0) return;
+  mark[size_t(v)] = stamp;
+  // Ring r + 1 is what the vertices of ring r (out[from, to)) reach first.
+  const int32_t* first = rings.ring_begin(v);
+  for (const int32_t* w = first; w != rings.ring_end(v); ++w)
+    if (mark[size_t(*w)] != stamp) {
+      mark[size_t(*w)] = stamp;
+      s.out.push_back(*w);
+    }
+  size_t from = 0;
+  for (int r = 1; r < count; ++r) {
+    const size_t to = s.out.size();
+    if (to == from) break;
+    for (size_t i = from; i < to; ++i) {
+      const int32_t u = s.out[i];
       for (const int32_t* w = rings.ring_begin(u); w != rings.ring_end(u); ++w)
-        if (s.mark[size_t(*w)] != s.stamp) {
-          s.mark[size_t(*w)] = s.stamp;
+        if (mark[size_t(*w)] != stamp) {
+          mark[size_t(*w)] = stamp;
           s.out.push_back(*w);
         }
-    std::sort(s.out.begin() + long(ring_start), s.out.end());
-    if (s.out.size() == ring_start) break;
-    s.seeds.assign(s.out.begin() + long(ring_start), s.out.end());
+    }
+    from = to;
   }
 }
 

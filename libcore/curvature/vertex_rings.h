@@ -17,7 +17,7 @@ class VertexRings {
   explicit VertexRings(const Mesh& mesh);
 
   size_t vertex_count() const { return start_.size() - 1; }
-  // The one-ring of v, sorted by vertex index, without v itself.
+  // The one-ring of v without v itself, in the order its triangles meet it.
   const int32_t* ring_begin(int32_t v) const { return ring_.data() + start_[size_t(v)]; }
   const int32_t* ring_end(int32_t v) const { return ring_.data() + start_[size_t(v) + 1]; }
   size_t valence(int32_t v) const { return size_t(start_[size_t(v) + 1] - start_[size_t(v)]); }
@@ -39,12 +39,12 @@ struct RingScratch {
   std::vector<uint32_t> mark;  // per vertex: the stamp of the last gather that saw it
   uint32_t stamp = 0;
   std::vector<int32_t> out;
-  std::vector<int32_t> seeds;  // the ring being expanded
 };
 
 // The vertices within `count` steps of v (v excluded) into scratch.out,
-// nearest ring first, each ring in ascending vertex order (so the result does
-// not depend on the thread or the order of earlier calls).
+// nearest ring first, each ring in the order the breadth-first search meets
+// it (the one-rings' order), which depends on v and the mesh alone: not on
+// the thread or the order of earlier calls. O(size of the result).
 void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& scratch);
 
 }  // namespace isoform

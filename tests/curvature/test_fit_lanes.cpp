@@ -1,0 +1,113 @@
+// The side-by-side fits (fit_height_lanes, fit_vertices) against the one-at-
+// a-time ones (fit_height, fit_vertex): the same bits for every lane, on
+// ordinary, degenerate and too small point sets, and on whole meshes with
+// boundaries, widened and lowered vertices.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "libcore/curvature/height_fit.h"
+#include "libcore/curvature/vertex_fit.h"
+#include "libcore/mesh_normals.h"
+#include "truth.h"
+
+using namespace isoform;
+
+namespace {
+
+struct PointSet {
+  std::vector<double> u, v, d;
+  int count() const { return int(u.size()); }
+};
+
+// Rings of points around the origin on a quartic height field; kind 1 puts
+// them on a line (a singular system), kind 2 keeps only a few, kind 3 none.
+PointSet point_set(std::mt19937& rng, int kind) {
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  PointSet p;
+  const int n = kind == 2 ? 2 + int(rng() % 12) : kind == 3 ? 0 : 20 + int(rng() % 30);
+  for (int j = 0; j < n; ++j) {
+    const double r = 0.01 * (1 + j / 6), a = j * 1.047 + jitter(rng);
+    const double x = r * std::cos(a), y = kind == 1 ? 0.5 * x : r * std::sin(a);
+    p.u.push_back(x);
+    p.v.push_back(y);
+    p.d.push_back(0.3 * x * x + 0.1 * x * y - 0.2 * y * y + x * x * x + 0.5 * x * x * y * y + 0.01 * x);
+  }
+  return p;
+}
+
+bool same_bits(const HeightFit& a, const HeightFit& b) {
+  return a.ok == b.ok && std::memcmp(&a.fu, &b.fu, 5 * sizeof(double)) == 0 &&
+         std::memcmp(&a.rcond, &b.rcond, sizeof(double)) == 0;
+}
+
+void expect_same(const VertexFitResult& a, const VertexFitResult& b, size_t v) {
+  EXPECT_EQ(a.flags, b.flags) << "vertex " << v;
+  const PrincipalCurvatures &p = a.curvature, &q = b.curvature;
+  EXPECT_EQ(std::memcmp(&p.k1, &q.k1, sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(&p.k2, &q.k2, sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(p.d1.data(), q.d1.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(p.normal.data(), q.normal.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+}
+
+}  // namespace
+
+TEST(FitLanes, SameBitsAsOneAtATime) {
+  std::mt19937 rng(5);
+  for (FitModel model : {FitModel::SeedQuadratic, FitModel::Quadric, FitModel::Cubic, FitModel::Quartic}) {
+    int fitted = 0, refused = 0;
+    for (int round = 0; round < 200; ++round) {
+      const int lanes = 1 + round % 4;
+      PointSet sets[4];
+      for (int l = 0; l < lanes; ++l) sets[l] = point_set(rng, round % 7 == l ? 1 + round % 3 : 0);
+      const double* u[4] = {};
+      const double* v[4] = {};
+      const double* d[4] = {};
+      int count[4] = {0, 0, 0, 0};
+      for (int l = 0; l < lanes; ++l) {
+        u[l] = sets[l].u.data();
+        v[l] = sets[l].v.data();
+        d[l] = sets[l].d.data();
+        count[l] = sets[l].count();
+      }
+      HeightFit out[4];
+      fit_height_lanes(model, u, v, d, count, lanes, out);
+      for (int l = 0; l < lanes; ++l) {
+        const HeightFit one = fit_height(model, u[l], v[l], d[l], count[l]);
+        EXPECT_TRUE(same_bits(one, out[l])) << "model " << int(model) << " round " << round << " lane " << l;
+        (one.ok ? fitted : refused) += 1;
+      }
+    }
+    // Both outcomes were exercised.
+    EXPECT_GT(fitted, 300) << "model " << int(model);
+    EXPECT_GT(refused, 20) << "model " << int(model);
+  }
+}
+
+TEST(FitLanes, VerticesInGroupsMatchFitVertex) {
+  std::vector<truth::Exact> exact;
+  Mesh closed = truth::shape_mesh(truth::Shape::Ellipsoid, 40, 0.25, 3, exact);
+  estimate_normals(closed);
+  Mesh open = truth::graph_mesh(truth::table41_graphs()[4], 21);
+  estimate_normals(open);
+  for (const Mesh* m : {&closed, &open}) {
+    const VertexRings rings(*m);
+    for (CurvatureMethod method :
+         {CurvatureMethod::Seed, CurvatureMethod::Quadric, CurvatureMethod::Cubic, CurvatureMethod::Quartic})
+      for (int extra : {0, 1}) {
+        VertexFitScratch a, b;
+        const int32_t n = int32_t(m->vertex_count());
+        for (int32_t first = 0; first < n; first += 3) {  // groups of 3 and 4, not aligned
+          const int count = std::min<int32_t>(first % 2 ? 3 : 4, n - first);
+          VertexFitResult group[4];
+          fit_vertices(*m, rings, first, count, method, extra, a, group);
+          for (int i = 0; i < count; ++i)
+            expect_same(fit_vertex(*m, rings, first + i, method, extra, b), group[i], size_t(first + i));
+          first += count - 3;
+        }
+      }
+  }
+}
