@@ -35,7 +35,7 @@ extern "C" {
 #endif
 
 /* Version: major * 10000 + minor * 100 + patch. */
-#define ISOFORM_VERSION 100
+#define ISOFORM_VERSION 200
 
 /* Returns ISOFORM_VERSION of the library actually loaded. */
 ISOFORM_API int isoform_version(void);

@@ -32,7 +32,7 @@ from .native_signatures import _f32, _f64, _i32, _u8
 
 # Must equal ISOFORM_VERSION of the isoform.h this module mirrors
 # (major * 10000 + minor * 100 + patch).
-ISOFORM_VERSION = 100
+ISOFORM_VERSION = 200
 LIBRARY_FILE = "libisoform.so"
 LIBRARY_ENV = "ISOFORM_LIBRARY"
 

@@ -261,7 +261,8 @@ def case_expected_version_checked():
     real = os.environ[native.LIBRARY_ENV]
     expect_raises(native.VersionMismatch,
                   lambda: native.Library(real, expected_version=native.ISOFORM_VERSION + 100),
-                  "0.1.0", "0.2.0")
+                  native.version_text(native.ISOFORM_VERSION),
+                  native.version_text(native.ISOFORM_VERSION + 100))
     expect(native.Library(real).version == native.ISOFORM_VERSION, "the real library refused")
 
 
