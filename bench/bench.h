@@ -71,6 +71,9 @@ long long peak_rss_kb();
 Json measure_isoform(const Request& request);
 Json measure_volume_to_mesh(const Request& request);
 Json measure_baseline();
+// The `cpu` sub-command (cpu_side.cpp): isoform_contour and volumeToMesh in
+// turn in one process, CPU and wall time of every call, request.reps each.
+Json measure_cpu_interleaved(const Request& request);
 #ifdef ISOFORM_BENCH_HAVE_VTK
 Json measure_flying_edges(const Request& request);
 #endif

@@ -85,6 +85,14 @@ int main(int argc, char** argv) {
   measure_cmd->add_option("--reps", request.reps)->check(CLI::Range(1, 20));
   measure_cmd->add_option("--result", result_path)->required();
 
+  CLI::App* cpu_cmd = app.add_subcommand(
+      "cpu", "isoform and volumeToMesh in turn in one process on one .vdb: CPU and wall time per call");
+  cpu_cmd->add_option("--vdb", request.vdb)->required();
+  cpu_cmd->add_option("--iso", request.iso);
+  cpu_cmd->add_option("--calls", request.reps, "Timed calls of each, after one untimed call of each")
+      ->check(CLI::Range(1, 20));
+  cpu_cmd->add_option("--result", result_path)->required();
+
   CLI11_PARSE(app, argc, argv);
 
   if (run_cmd->parsed()) return isoform_bench::run_all(run);
@@ -96,6 +104,7 @@ int main(int argc, char** argv) {
   // Every method gets the same two worker threads (isoform also asks for
   // them through isoform_contour_options.threads).
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, isoform_bench::kThreads);
+  if (cpu_cmd->parsed()) return run_as_child(result_path, [&] { return isoform_bench::measure_cpu_interleaved(request); });
   return run_as_child(result_path, [&]() -> Json {
     const std::string& m = request.method;
     if (m == "isoform" || m == "isoform-raw") return isoform_bench::measure_isoform(request);

@@ -31,6 +31,18 @@ uint64_t edge_key(int x, int y, int z, int slot) {
 BrickContourer::BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method)
     : xform_(index_to_world), iso_(isovalue), method_(method),
       slots_(method == ContourMethod::Tetra ? 7 : 3) {
+  // The cofactors of the linear part, as Affine::apply_normal computes them.
+  const double(&m)[3][4] = index_to_world.m;
+  const double c[3][3] = {
+      {m[1][1] * m[2][2] - m[1][2] * m[2][1], m[1][2] * m[2][0] - m[1][0] * m[2][2],
+       m[1][0] * m[2][1] - m[1][1] * m[2][0]},
+      {m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
+       m[0][1] * m[2][0] - m[0][0] * m[2][1]},
+      {m[0][1] * m[1][2] - m[0][2] * m[1][1], m[0][2] * m[1][0] - m[0][0] * m[1][2],
+       m[0][0] * m[1][1] - m[0][1] * m[1][0]}};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) cofactor_[a][b] = c[a][b];
+  normal_sign_ = index_to_world.determinant() < 0 ? -1.0 : 1.0;
   // For float samples f: f >= iso_above_ exactly when double(f) >= iso_,
   // and f == iso_float_ exactly when double(f) == iso_ (NaN when no float is).
   constexpr float big = std::numeric_limits<float>::max();
@@ -129,10 +141,17 @@ const Vec3d& BrickContourer::gradient(int i, int j, int k) {
 }
 
 int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
-  const Vec3d w = xform_.apply(index_pos);
-  const Vec3d n = xform_.apply_normal(grad);
+  // Affine::apply and apply_normal, with the normal map's signed cofactors
+  // computed once (the constructor): the same arithmetic, bit for bit.
+  const double(&m)[3][4] = xform_.m;
+  Vec3d w, n;
+  for (int a = 0; a < 3; ++a) {
+    w[a] = m[a][0] * index_pos[0] + m[a][1] * index_pos[1] + m[a][2] * index_pos[2] + m[a][3];
+    n[a] = normal_sign_ * (cofactor_[a][0] * grad[0] + cofactor_[a][1] * grad[1] + cofactor_[a][2] * grad[2]);
+  }
   std::vector<float>& v = out_->vertices;
   v.insert(v.end(), {float(w[0]), float(w[1]), float(w[2]), float(n[0]), float(n[1]), float(n[2])});
+  out_->on_seam.push_back(0);
   return int32_t(v.size() / 6 - 1);
 }
 
@@ -142,6 +161,9 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
   out_ = &work_;
   work_.vertices.clear();
   work_.triangles.clear();
+  work_.fan_links.clear();
+  work_.on_seam.clear();
+  work_.seam_edges = 0;
   work_.shared.clear();
   work_.stats = ContourStats();
   const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
@@ -178,6 +200,8 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
     throw Unsupported("a brick with more than 2^31 vertices");
   out.vertices = store.vertices.copy(work_.vertices.data(), work_.vertices.size());
   out.triangles = store.faces.copy(work_.triangles.data(), work_.triangles.size());
+  out.fan_links = store.faces.copy(work_.fan_links.data(), work_.fan_links.size());
+  out.seam_count = work_.seam_edges;
   out.shared = store.faces.copy(work_.shared.data(), work_.shared.size());
   out.vertex_count = uint32_t(nv);
   out.triangle_count = uint32_t(work_.triangles.size() / 3);
@@ -283,7 +307,10 @@ int32_t BrickContourer::edge_vertex(int ci, int cj, int ck, int p, int q) {
     const bool on_side = key[ax] == 0 || key[ax] == brick_->cells[ax];
     if ((slot < 3 && ax != slot) || (slot >= 3 && slot < 6 && ax == slot - 3)) shared |= on_side;
   }
-  if (shared) out_->shared.emplace_back(edge_key(o[0] + kx, o[1] + ky, o[2] + kz, slot), id);
+  if (shared) {
+    out_->shared.emplace_back(edge_key(o[0] + kx, o[1] + ky, o[2] + kz, slot), id);
+    out_->on_seam[size_t(id)] = 1;
+  }
   return id;
 }
 
@@ -307,7 +334,7 @@ void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[
     if (poly.double_face < 0) {
       // Theorem 3.4 (i): with at most one segment per face every
       // triangulation keeps Condition 3.1; a fan is one.
-      add_fan(ids, poly.size);
+      add_fan(ids, poly.size, true);
       continue;
     }
     // Theorem 3.5: fan from an extra point off the double face.
@@ -328,9 +355,21 @@ void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[
       centre = add_centroid(ids, poly.size);
       ++out_->stats.centroid_points;
     }
-    for (int m = 0; m < poly.size; ++m)
+    // Triangle m's spoke (ids[m + 1], centre) is the next one's first; the
+    // spoke to ids[0] and the polygon's sides are looked up, and only sides
+    // can be seam edges (the centre is this cell's own).
+    count_sides_on_seams(ids, poly.size);
+    for (int m = 0; m < poly.size; ++m) {
       tri.insert(tri.end(), {ids[m], ids[(m + 1) % poly.size], centre});
+      out_->fan_links.push_back(m + 1 < poly.size ? fan_link(1, 2) : 0);
+    }
   }
+}
+
+void BrickContourer::count_sides_on_seams(const int32_t* ids, int n) {
+  // Edges whose two ends other bricks may use become SeamEdge records.
+  const std::vector<uint8_t>& seam = out_->on_seam;
+  for (int m = 0; m < n; ++m) out_->seam_edges += seam[size_t(ids[m])] & seam[size_t(ids[m + 1 < n ? m + 1 : 0])];
 }
 
 int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
@@ -344,6 +383,7 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
     }
   std::vector<float>& v = out_->vertices;
   v.insert(v.end(), {float(p[0]), float(p[1]), float(p[2]), float(q[0]), float(q[1]), float(q[2])});
+  out_->on_seam.push_back(0);
   return int32_t(v.size() / 6 - 1);
 }
 
@@ -359,7 +399,7 @@ double area2(const double* p, const double* q, const double* r) {
 
 }  // namespace
 
-void BrickContourer::add_fan(const int32_t* ids, int n) {
+void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
   // NOTE: the apex whose smallest triangle is largest. Points on the edges
   // of one cell can be collinear (integer data at half-integer levels put
   // many at edge midpoints), and a fan from a fixed corner would then make
@@ -393,6 +433,20 @@ void BrickContourer::add_fan(const int32_t* ids, int n) {
     out[1] = ids[m < n ? m : m - n];
     out[2] = ids[m + 1 < n ? m + 1 : m + 1 - n];
   }
+  // Consecutive triangles share the diagonal (apex, ids[m + 1]): edge 2 of
+  // the one, edge 0 of the next; the polygon's sides are looked up. The
+  // tetra method's fans are left to the lookup whole (link false).
+  std::vector<uint8_t>& links = out_->fan_links;
+  for (int m = 0; m + 3 < n; ++m) links.push_back(link ? fan_link(2, 0) : 0);
+  links.push_back(0);
+  if (link) {
+    count_sides_on_seams(ids, n);
+  } else {
+    const std::vector<uint8_t>& seam = out_->on_seam;
+    for (const int32_t* t = &tri[at]; t != &tri[at] + 3 * size_t(n - 2); t += 3)
+      out_->seam_edges += (seam[size_t(t[0])] & seam[size_t(t[1])]) + (seam[size_t(t[1])] & seam[size_t(t[2])]) +
+                          (seam[size_t(t[2])] & seam[size_t(t[0])]);
+  }
 }
 
 void BrickContourer::contour_cell_tetra(int i, int j, int k, const double g[8]) {
@@ -404,7 +458,7 @@ void BrickContourer::contour_cell_tetra(int i, int j, int k, const double g[8]) 
     if (poly.size == 0) continue;
     int32_t ids[4];
     for (int m = 0; m < poly.size; ++m) ids[m] = edge_vertex(i, j, k, poly.edges[m][0], poly.edges[m][1]);
-    add_fan(ids, poly.size);
+    add_fan(ids, poly.size, false);
   }
 }
 

@@ -21,6 +21,9 @@ struct BrickWork {
   // space, not normalised).
   std::vector<float> vertices;
   std::vector<int32_t> triangles;   // brick-local vertex indices
+  std::vector<uint8_t> fan_links;   // per triangle: FanLink (below)
+  std::vector<uint8_t> on_seam;     // per vertex: 1 when other bricks may use it
+  uint32_t seam_edges = 0;          // BrickMesh::seam_count
   std::vector<std::pair<uint64_t, int32_t>> shared;  // (edge key, local vertex)
   ContourStats stats;
 };
@@ -31,13 +34,28 @@ struct BrickCounts {
           near_sample_points = 0;
 };
 
+// Triangles t and t + 1 of one fan in one cell share an edge that no other
+// triangle uses (the cell method: a diagonal from the fan's apex, or a spoke
+// to its extra point; inside a polygon with at most one segment per face no
+// two non-adjacent points share a cell face, and the extra point is the
+// polygon's own). fan_links[t] records it: 0 when t and t + 1 share no such
+// edge, else kFanLinked | (edge of t) | (edge of t + 1) << 2, edge i being
+// (v_i, v_i+1) of the triangle as the contour wrote it. brick_topology.h
+// links these pairs without looking them up.
+constexpr uint8_t kFanLinked = 0x80;
+inline uint8_t fan_link(int edge_here, int edge_next) { return uint8_t(kFanLinked | edge_here | (edge_next << 2)); }
+
 // A contoured brick's tables, kept in BrickStores (brick_store.h) until
 // they are merged.
 struct BrickMesh {
   const float* vertices = nullptr;  // per vertex: point (3), then gradient (3)
   const int32_t* triangles = nullptr;
+  const uint8_t* fan_links = nullptr;  // per triangle (BrickWork::fan_links)
   const std::pair<uint64_t, int32_t>* shared = nullptr;
   uint32_t vertex_count = 0, triangle_count = 0, shared_count = 0;
+  // Triangle edges with both ends shared that no fan link covers: the
+  // brick's SeamEdge records (brick_topology.h).
+  uint32_t seam_count = 0;
   BrickCounts counts;
 };
 
@@ -57,12 +75,15 @@ class BrickContourer {
   int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
   int32_t add_vertex(const Vec3d& index_pos, const Vec3d& grad);
   int32_t add_centroid(const int32_t* ids, int n);
-  void add_fan(const int32_t* ids, int n);
+  void add_fan(const int32_t* ids, int n, bool link);
+  void count_sides_on_seams(const int32_t* ids, int n);
   void contour_cell_trilinear(int i, int j, int k, const double g[8], int above);
   void contour_cell_tetra(int i, int j, int k, const double g[8]);
   void gather(int i, int j, int k, double g[8]) const;
 
   Affine xform_;
+  double cofactor_[3][3];  // of xform_'s linear part (Affine::apply_normal)
+  double normal_sign_;     // the sign of its determinant
   double iso_;
   float iso_above_, iso_float_;  // the isovalue as float thresholds (constructor)
   ContourMethod method_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <stdexcept>
 
 namespace isoform {
 namespace {
@@ -11,36 +12,48 @@ int next(int i) { return i == 2 ? 0 : i + 1; }
 
 }  // namespace
 
-int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared, const int32_t* final_vertex,
-                           int64_t first_triangle, int32_t* neighbours, int32_t* parts, TopologyCounts& total,
-                           std::vector<SeamEdge>& seams) {
+int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt,
+                           const uint8_t* shared, const int32_t* final_vertex, int64_t first_triangle,
+                           int32_t* neighbours, int32_t* parts, TopologyCounts& total, SeamEdge* seams,
+                           size_t seam_count) {
+  SeamEdge* const seams_end = seams + seam_count;
   TopologyCounts counts;  // local, so that it stays in registers
+  // Swapping a triangle's last two vertices turns its edge i into edge 2 - i.
+  const auto oriented = [&](int e) { return reversed ? 2 - e : e; };
   // The triangle edges of each undirected local edge, grouped in a hash
   // table: compute_neighbours finds the same groups by its vertex scan.
+  // Fan links pair the edges inside a fan directly (further below).
   size_t size = 16;
   while (size < 3 * nt) size *= 2;
   const int shift = 64 - __builtin_ctzll(size);
   // The table stays empty between calls: only the slots used are cleared.
   if (table_.size() < size) table_.assign(size, Slot{kEmpty, -1, -1});
   used_.clear();
-  for (size_t at = 0; at < 3 * nt; ++at) {
-    const size_t t = at / 3;
-    const int32_t a = tris[at], b = tris[3 * t + size_t(next(int(at - 3 * t)))];
-    neighbours[at] = -1;
-    if (shared[a] && shared[b]) {
-      const uint64_t fa = uint64_t(final_vertex[a]), fb = uint64_t(final_vertex[b]);
-      seams.push_back({fa < fb ? (fa << 32) | fb : (fb << 32) | fa, uint64_t(3 * first_triangle) + at});
-      continue;
-    }
-    const uint64_t key = a < b ? (uint64_t(a) << 32) | uint64_t(b) : (uint64_t(b) << 32) | uint64_t(a);
-    size_t h = size_t((key * 0x9E3779B97F4A7C15ull) >> shift);
-    while (table_[h].key != kEmpty && table_[h].key != key) h = (h + 1) & (size - 1);
-    Slot& slot = table_[h];
-    if (slot.key == kEmpty) {
-      slot = Slot{key, int32_t(at), -1};
-      used_.push_back(uint32_t(h));
-    } else {
-      slot.second = slot.second == -1 ? int32_t(at) : kMore;
+  for (size_t t = 0; t < nt; ++t) {
+    int linked = 0;
+    if (links[t]) linked |= 1 << oriented(links[t] & 3);
+    if (t > 0 && links[t - 1]) linked |= 1 << oriented((links[t - 1] >> 2) & 3);
+    for (int e = 0; e < 3; ++e) {
+      if ((linked >> e) & 1) continue;
+      const size_t at = 3 * t + size_t(e);
+      const int32_t a = tris[at], b = tris[3 * t + size_t(next(e))];
+      neighbours[at] = -1;
+      if (shared[a] && shared[b]) {
+        const uint64_t fa = uint64_t(final_vertex[a]), fb = uint64_t(final_vertex[b]);
+        if (seams == seams_end) throw std::logic_error("contour: more seam edges than the brick counted");
+        *seams++ = {fa < fb ? (fa << 32) | fb : (fb << 32) | fa, uint64_t(3 * first_triangle) + at};
+        continue;
+      }
+      const uint64_t key = a < b ? (uint64_t(a) << 32) | uint64_t(b) : (uint64_t(b) << 32) | uint64_t(a);
+      size_t h = size_t((key * 0x9E3779B97F4A7C15ull) >> shift);
+      while (table_[h].key != kEmpty && table_[h].key != key) h = (h + 1) & (size - 1);
+      Slot& slot = table_[h];
+      if (slot.key == kEmpty) {
+        slot = Slot{key, int32_t(at), -1};
+        used_.push_back(uint32_t(h));
+      } else {
+        slot.second = slot.second == -1 ? int32_t(at) : kMore;
+      }
     }
   }
   root_.resize(nt);
@@ -70,6 +83,18 @@ int32_t BrickTopology::run(const int32_t* tris, size_t nt, const uint8_t* shared
     }
     slot = Slot{kEmpty, -1, -1};
   }
+  for (size_t t = 0; t + 1 < nt; ++t) {
+    if (!links[t]) continue;
+    const int32_t here = int32_t(3 * t) + oriented(links[t] & 3);
+    const int32_t there = int32_t(3 * t + 3) + oriented((links[t] >> 2) & 3);
+    ++counts.edges;
+    neighbours[here] = int32_t(first_triangle) + int32_t(t) + 1;
+    neighbours[there] = int32_t(first_triangle) + int32_t(t);
+    counts.inconsistent += runs_up(here) == runs_up(there);
+    const int32_t ra = find(int32_t(t)), rb = find(int32_t(t) + 1);
+    if (ra != rb) root_[size_t(std::max(ra, rb))] = std::min(ra, rb);
+  }
+  if (seams != seams_end) throw std::logic_error("contour: fewer seam edges than the brick counted");
   total.add(counts);
   // Roots are the smallest triangle of their part: number them in order.
   int32_t label = 0;

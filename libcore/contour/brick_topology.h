@@ -41,17 +41,20 @@ struct TopologyCounts {
 // Per-thread scratch for the local topology of one brick at a time.
 class BrickTopology {
  public:
-  // tris: the brick's oriented triangles over local vertices;
+  // tris: the brick's oriented triangles over local vertices; links: their
+  // fan links (brick_contour.h), edges numbered as the contour wrote them
+  // (reversed: tris has each triangle's last two vertices swapped since);
   // shared: 1 per local vertex that other bricks may use; final_vertex: the
   // final index of each local vertex; first_triangle: the global index of
   // the brick's triangle 0. Writes the neighbours of local edges into
-  // neighbours (3 per triangle; seam edges are left for seams.h), appends
-  // the seam edges to seams, and writes into parts the brick-local part of
-  // each triangle over local edges (numbered by first triangle). Returns the
-  // number of local parts.
-  int32_t run(const int32_t* tris, size_t nt, const uint8_t* shared, const int32_t* final_vertex,
-              int64_t first_triangle, int32_t* neighbours, int32_t* parts, TopologyCounts& counts,
-              std::vector<SeamEdge>& seams);
+  // neighbours (3 per triangle; seam edges are left for seams.h), writes the
+  // seam edges to seams (exactly seam_count of them, BrickMesh::seam_count:
+  // std::logic_error otherwise), and writes into
+  // parts the brick-local part of each triangle over local edges (numbered
+  // by first triangle). Returns the number of local parts.
+  int32_t run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, const uint8_t* shared,
+              const int32_t* final_vertex, int64_t first_triangle, int32_t* neighbours, int32_t* parts,
+              TopologyCounts& counts, SeamEdge* seams, size_t seam_count);
 
  private:
   // One undirected local edge: its first two triangle edges; second is -1

@@ -13,6 +13,7 @@
 
 #include "../errors.h"
 #include "brick_topology.h"
+#include "packed_keys.h"
 #include "seams.h"
 
 namespace isoform {
@@ -39,7 +40,7 @@ void for_each_index(size_t n, F&& f) {
 }
 
 struct Offsets {
-  std::vector<size_t> vertex, triangle, shared;  // per brick, exclusive prefix sums
+  std::vector<size_t> vertex, triangle, shared, seam;  // per brick, exclusive prefix sums
 };
 
 Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
@@ -48,10 +49,12 @@ Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
   o.vertex.resize(n + 1, 0);
   o.triangle.resize(n + 1, 0);
   o.shared.resize(n + 1, 0);
+  o.seam.resize(n + 1, 0);
   for (size_t b = 0; b < n; ++b) {
     o.vertex[b + 1] = o.vertex[b] + bricks[b].vertex_count;
     o.triangle[b + 1] = o.triangle[b] + bricks[b].triangle_count;
     o.shared[b + 1] = o.shared[b] + bricks[b].shared_count;
+    o.seam[b + 1] = o.seam[b] + bricks[b].seam_count;
   }
   if (o.vertex.back() >= size_t(INT32_MAX) || 3 * o.triangle.back() >= size_t(INT32_MAX))
     throw Unsupported("the contour has more than 2^31 vertices or triangle corners");
@@ -67,25 +70,16 @@ struct VertexTable {
   std::vector<int32_t> first;  // per brick: final index of its first kept vertex
 };
 
-VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o) {
+// The sorted (edge key, provisional vertex) pairs, seen through View:
+// same(i, j) when entries i and j hold one key; vertex(i).
+template <class View>
+void number_vertices(const View& keys, size_t nk, const std::vector<BrickMesh>& bricks, const Offsets& o,
+                     VertexTable& vt) {
   const size_t nb = bricks.size();
-  VertexTable vt;
-  vt.final_index = uninitialised<int32_t>(o.vertex.back());
   int32_t* fin = vt.final_index.get();
-  using Key = std::pair<uint64_t, uint64_t>;  // (edge key, provisional vertex)
-  const size_t nk = o.shared.back();
-  const std::unique_ptr<Key[]> keys = uninitialised<Key>(nk);
-  for_each_brick(nb, [&](size_t b) {
-    size_t at = o.shared[b];
-    const BrickMesh& bm = bricks[b];
-    for (size_t m = 0; m < bm.shared_count; ++m)
-      keys[at++] = {bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second)};
-    for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) fin[v] = 0;
-  });
-  tbb::parallel_sort(keys.get(), keys.get() + nk);
-  const auto copy = [&](size_t i) { return i > 0 && keys[i].first == keys[i - 1].first; };
+  const auto copy = [&](size_t i) { return i > 0 && keys.same(i, i - 1); };
   for_each_index(nk, [&](size_t i) {
-    if (copy(i)) fin[keys[i].second] = -1;
+    if (copy(i)) fin[keys.vertex(i)] = -1;
   });
   std::vector<int32_t> kept(nb, 0);
   for_each_brick(nb, [&](size_t b) {
@@ -102,8 +96,57 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
     if (!copy(i)) return;
     size_t head = i - 1;
     while (copy(head)) --head;
-    fin[keys[i].second] = fin[keys[head].second];
+    fin[keys.vertex(i)] = fin[keys.vertex(head)];
   });
+}
+
+struct PairKeys {
+  const std::pair<uint64_t, uint64_t>* k;
+  bool same(size_t i, size_t j) const { return k[i].first == k[j].first; }
+  size_t vertex(size_t i) const { return size_t(k[i].second); }
+};
+
+struct PackedKeys {
+  const uint64_t* k;
+  int shift;  // bits of the provisional vertex
+  bool same(size_t i, size_t j) const { return (k[i] >> shift) == (k[j] >> shift); }
+  size_t vertex(size_t i) const { return size_t(k[i] & ((uint64_t(1) << shift) - 1)); }
+};
+
+VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o) {
+  const size_t nb = bricks.size();
+  VertexTable vt;
+  vt.final_index = uninitialised<int32_t>(o.vertex.back());
+  int32_t* fin = vt.final_index.get();
+  for_each_brick(nb, [&](size_t b) {
+    for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) fin[v] = 0;
+  });
+  const size_t nk = o.shared.back();
+  const PackedLayout layout = packed_layout(bricks, o.vertex.back());
+  if (layout.fits) {
+    // (edge key, provisional vertex) in one word, in the same order: half
+    // the memory of the pairs, and a cheaper sort.
+    const std::unique_ptr<uint64_t[]> keys = uninitialised<uint64_t>(nk);
+    for_each_brick(nb, [&](size_t b) {
+      size_t at = o.shared[b];
+      const BrickMesh& bm = bricks[b];
+      for (size_t m = 0; m < bm.shared_count; ++m)
+        keys[at++] = layout.pack(bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second));
+    });
+    tbb::parallel_sort(keys.get(), keys.get() + nk);
+    number_vertices(PackedKeys{keys.get(), layout.vertex_bits}, nk, bricks, o, vt);
+    return vt;
+  }
+  using Key = std::pair<uint64_t, uint64_t>;  // (edge key, provisional vertex)
+  const std::unique_ptr<Key[]> keys = uninitialised<Key>(nk);
+  for_each_brick(nb, [&](size_t b) {
+    size_t at = o.shared[b];
+    const BrickMesh& bm = bricks[b];
+    for (size_t m = 0; m < bm.shared_count; ++m)
+      keys[at++] = {bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second)};
+  });
+  tbb::parallel_sort(keys.get(), keys.get() + nk);
+  number_vertices(PairKeys{keys.get()}, nk, bricks, o, vt);
   return vt;
 }
 
@@ -122,7 +165,6 @@ struct Scratch {
   BrickTopology topology;
   std::vector<uint8_t> shared;
   std::vector<int32_t> triangles;  // reversed brick-local triangles, when asked
-  std::vector<SeamEdge> seams;
   TopologyCounts counts;
   bool missing_normal = false;
 };
@@ -164,14 +206,15 @@ void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTa
 
 // Brick b's local neighbours and parts (brick_topology.h).
 void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
-                    const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, Scratch& s) {
+                    const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, SeamEdge* seams,
+                    Scratch& s) {
   s.shared.assign(bm.vertex_count, 0);
   for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
   const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
-  part_counts[b] = s.topology.run(tris, bm.triangle_count, s.shared.data(),
+  part_counts[b] = s.topology.run(tris, bm.fan_links, orient.reverse, bm.triangle_count, s.shared.data(),
                                   vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
-                                  &mesh.parts[t0], s.counts, s.seams);
+                                  &mesh.parts[t0], s.counts, seams + o.seam[b], bm.seam_count);
 }
 
 void sum_contour_stats(const std::vector<BrickMesh>& bricks, ContourStats& c) {
@@ -203,8 +246,12 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   for (BrickStores& s : tables.stores) s.vertices.clear();
   tbb::parallel_invoke([&] { mesh.neighbours.resize(3 * nt); }, [&] { mesh.parts.resize(nt); });
   std::vector<int32_t> part_counts(nb, 0);
+  // Each brick writes its seam edges at its own offset: in brick order, and
+  // in edge order inside a brick.
+  const size_t seam_count = o.seam.back();
+  std::unique_ptr<SeamEdge[]> seams = uninitialised<SeamEdge>(seam_count);
   for_each_brick(nb, [&](size_t b) {
-    brick_topology(bricks[b], b, o, vt, orientation, mesh, part_counts, scratch.local());
+    brick_topology(bricks[b], b, o, vt, orientation, mesh, part_counts, seams.get(), scratch.local());
   });
   vt.final_index.reset();
   for (BrickStores& s : tables.stores) s.faces.clear();
@@ -218,19 +265,13 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   });
   TopologyCounts counts;
   bool missing = false;
-  std::vector<SeamEdge> seams;
-  size_t seam_count = 0;
-  for (Scratch& s : scratch) seam_count += s.seams.size();
-  seams.reserve(seam_count);
   for (Scratch& s : scratch) {
     counts.add(s.counts);
     missing |= s.missing_normal;
-    seams.insert(seams.end(), s.seams.begin(), s.seams.end());
-    std::vector<SeamEdge>().swap(s.seams);
   }
   std::vector<std::pair<int32_t, int32_t>> links;
-  match_seams(seams, mesh.triangles, mesh.neighbours, counts, links);
-  std::vector<SeamEdge>().swap(seams);
+  match_seams(seams.get(), seam_count, mesh.triangles, mesh.neighbours, counts, links);
+  seams.reset();
   mesh.part_count = number_parts(mesh.parts, size_t(part_first.back()), links);
   mesh.stats = MeshStats();
   mesh.stats.boundary_edges = counts.boundary;

@@ -40,11 +40,10 @@ void match_group(const SeamEdge* g, size_t n, const std::vector<int32_t>& triang
 
 }  // namespace
 
-void match_seams(std::vector<SeamEdge>& seams, const std::vector<int32_t>& triangles,
+void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
                  std::vector<int32_t>& neighbours, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links) {
-  tbb::parallel_sort(seams.begin(), seams.end());
-  const size_t n = seams.size();
+  tbb::parallel_sort(seams, seams + n);
   tbb::enumerable_thread_specific<GroupScratch> scratch;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
     GroupScratch& s = scratch.local();

@@ -3,6 +3,7 @@
 // and numbered by size.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -16,7 +17,7 @@ namespace isoform {
 // appends the pair to links), one held by one is a boundary edge, one held
 // by three or more gets no neighbours and counts as non-manifold.
 // Runs in parallel with TBB in the calling task arena.
-void match_seams(std::vector<SeamEdge>& seams, const std::vector<int32_t>& triangles,
+void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
                  std::vector<int32_t>& neighbours, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links);
 

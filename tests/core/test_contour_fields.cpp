@@ -207,6 +207,10 @@ TEST(Contour, BrickTopologyEqualsTheWholeMeshAlgorithm) {
       again.triangles = m.triangles;
       compute_topology(again);
       EXPECT_GT(m.part_count, 10);
+      // Fans from extra points (their spokes are linked inside the fan) occur.
+      if (method == ContourMethod::Cells) {
+        EXPECT_GT(m.contour.extra_points + m.contour.centroid_points, 0);
+      }
       EXPECT_EQ(m.neighbours, again.neighbours);
       EXPECT_EQ(m.parts, again.parts);
       EXPECT_EQ(m.part_count, again.part_count);
