@@ -29,11 +29,11 @@ int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const i
     const Real* p = points + 3 * size_t(*ring);
     const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
     const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
-    if (u == 0.0 && vv == 0.0) continue;
+    // Written always, kept unless it coincides with the vertex (no branch).
     pu[count] = u;
     pv[count] = vv;
     pd[count] = x * n(0) + y * n(1) + z * n(2);
-    ++count;
+    count += !(u == 0.0 && vv == 0.0);
   }
   return count;
 }

@@ -158,30 +158,37 @@ void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s
   }
   const uint32_t stamp = s.stamp;
   uint32_t* mark = s.mark.data();
-  s.out.clear();
-  if (count <= 0) return;
+  if (count <= 0) {
+    s.out.clear();
+    return;
+  }
   mark[size_t(v)] = stamp;
   // Ring r + 1 is what the vertices of ring r (out[from, to)) reach first.
-  const int32_t* first = rings.ring_begin(v);
-  for (const int32_t* w = first; w != rings.ring_end(v); ++w)
-    if (mark[size_t(*w)] != stamp) {
+  // Each neighbour is written at the end and kept only when new (no branch
+  // on whether it is: which is as good as random).
+  size_t size = 0;
+  auto meet_all = [&](const int32_t* w, const int32_t* end) {
+    if (s.out.size() < size + size_t(end - w)) s.out.resize(2 * (size + size_t(end - w)));
+    int32_t* out = s.out.data();
+    for (; w != end; ++w) {
+      const bool fresh = mark[size_t(*w)] != stamp;
       mark[size_t(*w)] = stamp;
-      s.out.push_back(*w);
+      out[size] = *w;
+      size += fresh;
     }
+  };
+  meet_all(rings.ring_begin(v), rings.ring_end(v));
   size_t from = 0;
   for (int r = 1; r < count; ++r) {
-    const size_t to = s.out.size();
+    const size_t to = size;
     if (to == from) break;
     for (size_t i = from; i < to; ++i) {
       const int32_t u = s.out[i];
-      for (const int32_t* w = rings.ring_begin(u); w != rings.ring_end(u); ++w)
-        if (mark[size_t(*w)] != stamp) {
-          mark[size_t(*w)] = stamp;
-          s.out.push_back(*w);
-        }
+      meet_all(rings.ring_begin(u), rings.ring_end(u));
     }
     from = to;
   }
+  s.out.resize(size);
 }
 
 }  // namespace isoform
