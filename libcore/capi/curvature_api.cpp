@@ -49,22 +49,32 @@ isoform_status isoform_curvature(isoform_mesh* mesh, const isoform_curvature_opt
     const isoform::CurvatureOptions c = to_options(o);
     const isoform::Progress p(progress);
     p.stage(ISOFORM_STAGE_CURVATURE);
-    // Work on a copy of what changes, so a failure leaves the mesh as it was.
+    // The fit reads the mesh and writes new arrays, which replace the
+    // mesh's only once everything has succeeded: a failure leaves the mesh
+    // as it was. Only a mesh without normals is copied, to estimate them.
     isoform::Mesh& m = mesh->mesh;
-    isoform::Mesh work;
-    work.points = m.points;
-    work.precise_points = m.precise_points;
-    work.triangles = m.triangles;
-    work.normals = m.normals;
-    if (work.normals.size() != work.points.size()) isoform::estimate_normals(work);
-    isoform::compute_curvature(work, c, p);
+    const isoform::Mesh* input = &m;
+    isoform::Mesh with_normals;
+    if (m.normals.size() != m.points.size()) {
+      with_normals.points = m.points;
+      with_normals.precise_points = m.precise_points;
+      with_normals.triangles = m.triangles;
+      isoform::estimate_normals(with_normals);
+      input = &with_normals;
+    }
+    isoform::VertexCurvature curvature;
+    std::vector<float> fitted_normals;
+    isoform::compute_curvature(*input, c, p, curvature, &fitted_normals);
     const auto q = isoform::CurvatureQuantity(o.color_by);
-    isoform::colour_by_curvature(work, q);
+    std::vector<uint8_t> colors;
     double lo = 0, hi = 0;
-    isoform::curvature_colour_range(work, q, &lo, &hi);
-    m.curvature = std::move(work.curvature);
-    m.colors = std::move(work.colors);
-    m.normals = std::move(work.normals);
+    isoform::curvature_colours(curvature, q, colors, &lo, &hi);
+    m.curvature = std::move(curvature);
+    m.colors = std::move(colors);
+    if (c.update_normals)
+      m.normals = std::move(fitted_normals);
+    else if (input == &with_normals)
+      m.normals = std::move(with_normals.normals);
     mesh->curvature_color_by = o.color_by;
     mesh->curvature_color_range[0] = lo;
     mesh->curvature_color_range[1] = hi;

@@ -55,9 +55,7 @@ bool usable(uint8_t flags) { return !(flags & (kCurvatureIsolated | kCurvatureFa
 
 }  // namespace
 
-const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q) {
-  const VertexCurvature& c = mesh.curvature;
-  if (c.empty() && mesh.vertex_count() > 0) throw InvalidArgument("curvature colours: the mesh has no curvature");
+const std::vector<float>& curvature_values(const VertexCurvature& c, CurvatureQuantity q) {
   switch (q) {
     case CurvatureQuantity::K1: return c.k1;
     case CurvatureQuantity::K2: return c.k2;
@@ -68,12 +66,20 @@ const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q
   throw InvalidArgument("curvature colours: unknown quantity");
 }
 
-void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi) {
-  const std::vector<float>& values = curvature_values(mesh, q);
+const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q) {
+  if (mesh.curvature.empty() && mesh.vertex_count() > 0)
+    throw InvalidArgument("curvature colours: the mesh has no curvature");
+  return curvature_values(mesh.curvature, q);
+}
+
+namespace {
+
+void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, double* hi) {
+  const std::vector<float>& values = curvature_values(c, q);
   std::vector<float> kept(values.size());
   size_t count = 0;
   for (size_t v = 0; v < values.size(); ++v)
-    if (usable(mesh.curvature.flags[v])) kept[count++] = values[v];
+    if (usable(c.flags[v])) kept[count++] = values[v];
   kept.resize(count);
   percentiles(kept, 0.02, 0.98, lo, hi);
   if (q != CurvatureQuantity::Absolute) {
@@ -83,22 +89,39 @@ void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, d
   }
 }
 
+void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, double hi, std::vector<uint8_t>& colors) {
+  const std::vector<float>& values = curvature_values(c, q);
+  const double span = hi > lo ? hi - lo : 1.0;
+  colors.resize(4 * values.size());
+  for (size_t v = 0; v < values.size(); ++v) {
+    const double t = (values[v] - lo) / span;
+    Rgb rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
+    if (!usable(c.flags[v])) rgb = {0.5, 0.5, 0.5};
+    uint8_t* out = &colors[4 * v];
+    out[0] = uint8_t(std::lround(255 * rgb.r));
+    out[1] = uint8_t(std::lround(255 * rgb.g));
+    out[2] = uint8_t(std::lround(255 * rgb.b));
+    out[3] = 255;
+  }
+}
+
+}  // namespace
+
+void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi) {
+  curvature_values(mesh, q);  // checks that there is curvature
+  colour_range(mesh.curvature, q, lo, hi);
+}
+
 void colour_by_curvature(Mesh& mesh, CurvatureQuantity q) {
   double lo, hi;
   curvature_colour_range(mesh, q, &lo, &hi);
-  const std::vector<float>& values = curvature_values(mesh, q);
-  const double span = hi > lo ? hi - lo : 1.0;
-  mesh.colors.resize(4 * values.size());
-  for (size_t v = 0; v < values.size(); ++v) {
-    const double t = (values[v] - lo) / span;
-    Rgb c = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
-    if (!usable(mesh.curvature.flags[v])) c = {0.5, 0.5, 0.5};
-    uint8_t* out = &mesh.colors[4 * v];
-    out[0] = uint8_t(std::lround(255 * c.r));
-    out[1] = uint8_t(std::lround(255 * c.g));
-    out[2] = uint8_t(std::lround(255 * c.b));
-    out[3] = 255;
-  }
+  fill_colours(mesh.curvature, q, lo, hi, mesh.colors);
+}
+
+void curvature_colours(const VertexCurvature& c, CurvatureQuantity q, std::vector<uint8_t>& colors, double* lo,
+                       double* hi) {
+  colour_range(c, q, lo, hi);
+  fill_colours(c, q, *lo, *hi, colors);
 }
 
 }  // namespace isoform

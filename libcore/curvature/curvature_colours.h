@@ -13,6 +13,7 @@ enum class CurvatureQuantity { K1 = 0, K2 = 1, Mean = 2, Gauss = 3, Absolute = 4
 
 // The per-vertex values of a quantity (mesh.curvature must be computed).
 const std::vector<float>& curvature_values(const Mesh& mesh, CurvatureQuantity q);
+const std::vector<float>& curvature_values(const VertexCurvature& c, CurvatureQuantity q);
 
 // The robust range used for the colours: [lo, hi]; symmetric about zero for
 // the signed quantities.
@@ -21,5 +22,10 @@ void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, d
 // Fills mesh.colors (red, green, blue, alpha per vertex). Vertices flagged
 // isolated or failed are grey.
 void colour_by_curvature(Mesh& mesh, CurvatureQuantity q);
+
+// Both at once, from the curvature alone: the range into lo, hi and the
+// colours into colors (4 per vertex, reused where the size matches).
+void curvature_colours(const VertexCurvature& c, CurvatureQuantity q, std::vector<uint8_t>& colors, double* lo,
+                       double* hi);
 
 }  // namespace isoform

@@ -2,46 +2,11 @@
 // fundamental forms (4.14, 4.15).
 #include "principal.h"
 
-#include <Eigen/Geometry>
-
-#include <cmath>
-
 namespace isoform {
 
 PrincipalCurvatures principal_curvatures(const HeightFit& f, const Eigen::Vector3d& b1,
                                          const Eigen::Vector3d& b2, const Eigen::Vector3d& n) {
-  PrincipalCurvatures pc;
-  const double l = std::sqrt(1.0 + f.fu * f.fu + f.fv * f.fv);
-  // First fundamental form E F G, and the second along the graph's normal,
-  // negated for isoform's sign (positive where the surface bends away).
-  const double E = 1.0 + f.fu * f.fu, F = f.fu * f.fv, G = 1.0 + f.fv * f.fv;
-  const double L = -f.fuu / l, M = -f.fuv / l, N = -f.fvv / l;
-  // The shape operator W = I^-1 II; its trace and determinant give H and K.
-  const double det_i = E * G - F * F;
-  const double w11 = (G * L - F * M) / det_i, w12 = (G * M - F * N) / det_i;
-  const double w21 = (E * M - F * L) / det_i, w22 = (E * N - F * M) / det_i;
-  const double h = 0.5 * (w11 + w22), k = w11 * w22 - w12 * w21;
-  const double disc = std::sqrt(std::max(0.0, h * h - k));
-  pc.k1 = h + disc;
-  pc.k2 = h - disc;
-  const Eigen::Vector3d xu = b1 + f.fu * n, xv = b2 + f.fv * n;
-  pc.normal = (n - f.fu * b1 - f.fv * b2) / l;
-  // The eigenvector of W for k1 from whichever row of (W - k1 I) is larger;
-  // at an umbilic every direction is principal.
-  // (Squared lengths: the comparisons are those of the lengths.)
-  const double a1 = w11 - pc.k1, a2 = w22 - pc.k1;
-  const double r1 = a1 * a1 + w12 * w12, r2 = w21 * w21 + a2 * a2;
-  const double tiny = 1e-12 * (std::abs(pc.k1) + std::abs(pc.k2) + 1e-300);
-  Eigen::Vector2d e;
-  if (std::max(r1, r2) <= tiny * tiny)
-    e = {1.0, 0.0};
-  else if (r1 >= r2)
-    e = {w12, pc.k1 - w11};
-  else
-    e = {pc.k1 - w22, w21};
-  pc.d1 = (e(0) * xu + e(1) * xv).normalized();
-  pc.d2 = pc.normal.cross(pc.d1).normalized();
-  return pc;
+  return principal_curvatures_inline(f, b1, b2, n);
 }
 
 }  // namespace isoform

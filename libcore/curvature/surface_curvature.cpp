@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "../errors.h"
+#include "seed_vertex.h"
 #include "vertex_fit.h"
 
 namespace isoform {
@@ -48,7 +49,8 @@ void count_flags(VertexCurvature& c) {
 
 }  // namespace
 
-void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progress& progress) {
+void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const Progress& progress,
+                       VertexCurvature& c, std::vector<float>* fitted) {
   const size_t n = mesh.vertex_count();
   if (options.extra_rings < 0 || options.extra_rings > 8)
     throw InvalidArgument("curvature: extra rings must be 0 to 8, not " + std::to_string(options.extra_rings));
@@ -56,16 +58,29 @@ void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progre
     throw InvalidArgument("curvature: the mesh has " + std::to_string(mesh.normals.size() / 3) + " normals for " +
                           std::to_string(n) + " vertices");
   const VertexRings rings(mesh);
-  VertexCurvature c;
+  c.stats = CurvatureStats{};
   c.stats.method = options.method;
+  // resize() keeps arrays that already have the size (no new pages).
   for (auto* a : {&c.k1, &c.k2, &c.mean, &c.gauss, &c.absolute}) a->resize(n);
   c.d1.resize(3 * n);
   c.d2.resize(3 * n);
   c.flags.resize(n);
-  std::vector<float> fitted_normals(options.update_normals ? 3 * n : 0);
+  std::vector<float> unused;
+  std::vector<float>& fitted_normals = options.update_normals && fitted ? *fitted : unused;
+  fitted_normals.assign(options.update_normals && fitted ? 3 * n : 0, 0.0f);
+  // The seed's method on its one-ring takes the short path (seed_vertex.h).
+  const bool seed = options.method == CurvatureMethod::Seed && options.extra_rings == 0;
   tbb::enumerable_thread_specific<VertexFitScratch> scratch;
   std::atomic<size_t> done{0};
   std::atomic<bool> stop{false};
+  auto keep = [&](size_t v, const VertexFitResult& r) {
+    store(c, v, r);
+    if (fitted_normals.empty()) return;
+    if (!(r.flags & (kCurvatureIsolated | kCurvatureFailed)))
+      for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = float(r.curvature.normal(a));
+    else if (mesh.normals.size() == 3 * n)
+      for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = mesh.normals[3 * v + size_t(a)];
+  };
   auto body = [&](const tbb::blocked_range<size_t>& range) {
     if (stop.load(std::memory_order_relaxed)) return;
     if (progress.cancelled()) {
@@ -73,20 +88,16 @@ void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progre
       return;
     }
     VertexFitScratch& s = scratch.local();
-    VertexFitResult group[4];
-    for (size_t first = range.begin(); first < range.end(); first += 4) {
-      // Four vertices at a time (fit_vertices); each result is the one
-      // fit_vertex gives, so the grouping cannot change a bit.
-      const int count = int(std::min<size_t>(4, range.end() - first));
-      fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
-      for (int i = 0; i < count; ++i) {
-        const size_t v = first + size_t(i);
-        const VertexFitResult& r = group[i];
-        store(c, v, r);
-        if (!fitted_normals.empty() && !(r.flags & (kCurvatureIsolated | kCurvatureFailed)))
-          for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = float(r.curvature.normal(a));
-        else if (!fitted_normals.empty() && mesh.normals.size() == 3 * n)
-          for (int a = 0; a < 3; ++a) fitted_normals[3 * v + size_t(a)] = mesh.normals[3 * v + size_t(a)];
+    if (seed) {
+      for (size_t v = range.begin(); v < range.end(); ++v) keep(v, fit_seed_vertex(mesh, rings, int32_t(v), s));
+    } else {
+      VertexFitResult group[4];
+      for (size_t first = range.begin(); first < range.end(); first += 4) {
+        // Four vertices at a time (fit_vertices); each result is the one
+        // fit_vertex gives, so the grouping cannot change a bit.
+        const int count = int(std::min<size_t>(4, range.end() - first));
+        fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
+        for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
       }
     }
     progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
@@ -102,8 +113,14 @@ void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progre
   }
   if (stop) throw Cancelled("curvature: cancelled");
   count_flags(c);
+}
+
+void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progress& progress) {
+  VertexCurvature c;
+  std::vector<float> fitted;
+  compute_curvature(mesh, options, progress, c, &fitted);
   mesh.curvature = std::move(c);
-  if (options.update_normals) mesh.normals = std::move(fitted_normals);
+  if (options.update_normals) mesh.normals = std::move(fitted);
 }
 
 const char* curvature_method_name(CurvatureMethod method) {

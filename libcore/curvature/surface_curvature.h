@@ -25,6 +25,13 @@ struct CurvatureOptions {
 // asks; the mesh is unchanged on failure.
 void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progress& progress);
 
+// The same without touching the mesh: the results into out, whose arrays
+// are reused where their sizes already match, and with update_normals the
+// fitted normals (3 per vertex) into *fitted_normals. out is unspecified
+// after a throw.
+void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const Progress& progress,
+                       VertexCurvature& out, std::vector<float>* fitted_normals);
+
 // The name of a method ("seed", "quadric", "cubic", "quartic") and back
 // (false for an unknown name).
 const char* curvature_method_name(CurvatureMethod method);

@@ -86,13 +86,15 @@ bool frame_normal(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near,
 
 // Local coordinates (4.27) and signed heights (4.24) of the gathered points;
 // points that coincide with the vertex carry nothing and are left out.
+// s's arrays get one entry to spare: the last point is written before it is
+// known whether it stays.
 template <class Real>
 int local_coordinates(const Real* points, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
                       const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
-  if (s.u.size() < near.size()) {
-    s.u.resize(near.size());
-    s.v.resize(near.size());
-    s.d.resize(near.size());
+  if (s.u.size() < near.size() + 1) {
+    s.u.resize(near.size() + 1);
+    s.v.resize(near.size() + 1);
+    s.d.resize(near.size() + 1);
   }
   const Real* q = points + 3 * size_t(v);
   const double ox = q[0], oy = q[1], oz = q[2];
@@ -102,11 +104,11 @@ int local_coordinates(const Real* points, int32_t v, const std::vector<int32_t>&
     const Real* p = points + 3 * size_t(w);
     const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
     const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
-    if (u == 0.0 && vv == 0.0) continue;
+    // Written always, kept unless it coincides with the vertex (no branch).
     pu[count] = u;
     pv[count] = vv;
     pd[count] = x * n(0) + y * n(1) + z * n(2);
-    ++count;
+    count += !(u == 0.0 && vv == 0.0);
   }
   return count;
 }

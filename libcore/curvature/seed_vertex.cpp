@@ -1,0 +1,130 @@
+// The seed's fit at one vertex without the general path's copies; each step
+// is fit_vertex's own arithmetic in fit_vertex's order, so the bits match.
+#include "seed_vertex.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+#include "small_ldlt.h"
+
+namespace isoform {
+namespace {
+
+using Eigen::Vector3d;
+
+// Rings longer than this go the general way (no fixed-size buffer).
+constexpr size_t kMaxValence = 32;
+
+// Local coordinates (4.27) and heights (4.24) of the one-ring, as
+// vertex_fit.cpp's local_coordinates computes them.
+template <class Real>
+int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const int32_t* end, const Vector3d& b1,
+                     const Vector3d& b2, const Vector3d& n, double* pu, double* pv, double* pd) {
+  const Real* q = points + 3 * size_t(v);
+  const double ox = q[0], oy = q[1], oz = q[2];
+  int count = 0;
+  for (; ring != end; ++ring) {
+    const Real* p = points + 3 * size_t(*ring);
+    const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
+    const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
+    // Written always, kept unless it coincides with the vertex (no branch).
+    pu[count] = u;
+    pv[count] = vv;
+    pd[count] = x * n(0) + y * n(1) + z * n(2);
+    count += !(u == 0.0 && vv == 0.0);
+  }
+  return count;
+}
+
+// fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, padded
+// with zeros to a multiple of 4, with fit_height's arithmetic in its order:
+// the scale, the five moments u^4 .. v^4 and three sums d u^2, d u v,
+// d v^2 as four partial sums (point j into sum j mod 4, the padding adding
+// zeros) added pairwise, the pivoted 3 x 3 LDLT, the conditioning test.
+bool seed_fit(const double* u, const double* v, const double* d, int count, HeightFit& out) {
+  double r2 = 0.0;
+  for (int j = 0; j < count; ++j) r2 = std::max(r2, u[j] * u[j] + v[j] * v[j]);
+  const double scale = std::sqrt(r2);
+  if (!(scale > 0.0) || !std::isfinite(scale)) return false;
+  const double inv = 1.0 / scale;
+  // Lane l of each vector sums the points j = l mod 4 (the padding adds
+  // zeros), as fit_height's four-point loop does.
+  typedef double Quad __attribute__((vector_size(32)));
+  Quad m0 = {}, m1 = {}, m2 = {}, m3 = {}, m4 = {}, r0 = {}, r1 = {}, r2s = {};
+  for (int j = 0; j < count; j += 4) {
+    const Quad x = Quad{u[j], u[j + 1], u[j + 2], u[j + 3]} * inv;
+    const Quad y = Quad{v[j], v[j + 1], v[j + 2], v[j + 3]} * inv;
+    const Quad h = {d[j], d[j + 1], d[j + 2], d[j + 3]};
+    const Quad x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
+    m0 += x3 * x;
+    m1 += x3 * y;
+    m2 += x2 * y2;
+    m3 += x * y3;
+    m4 += y3 * y;
+    r0 += h * x2;
+    r1 += h * (x * y);
+    r2s += h * y2;
+  }
+  auto total = [](const Quad& q) { return (q[0] + q[1]) + (q[2] + q[3]); };
+  const double moment[5] = {total(m0), total(m1), total(m2), total(m3), total(m4)};
+  const double rhs[3] = {total(r0), total(r1), total(r2s)};
+  // Terms u^2, u v, v^2: entry (r, c) is the moment of v-power r + c.
+  static constexpr int at[3][3] = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
+  SmallLdlt<3> ldlt;
+  if (!ldlt.factor(moment, at)) return false;
+  double hi = 0.0, lo = ldlt.d(0);
+  for (int i = 0; i < 3; ++i) {
+    hi = std::max(hi, std::abs(ldlt.d(i)));
+    lo = std::min(lo, ldlt.d(i));
+  }
+  const double rcond = hi > 0.0 ? lo / hi : 0.0;
+  if (!(lo > 0.0 && rcond >= 1e-10)) return false;
+  double c[3];
+  ldlt.solve(rhs, c);
+  for (double x : c)
+    if (!std::isfinite(x)) return false;
+  const double s2 = scale * scale;
+  out.fuu = 2.0 * c[0] / s2;
+  out.fuv = c[1] / s2;
+  out.fvv = 2.0 * c[2] / s2;
+  out.rcond = rcond;
+  out.ok = true;
+  return true;
+}
+
+}  // namespace
+
+VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, VertexFitScratch& s) {
+  VertexFitResult r;
+  const size_t valence = rings.valence(v);
+  if (valence == 0) {
+    r.flags = kCurvatureIsolated;
+    return r;
+  }
+  if (valence > kMaxValence || mesh.normals.size() != mesh.points.size())
+    return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
+  // frame_normal's test of the given normal.
+  const float* q = &mesh.normals[3 * size_t(v)];
+  Vector3d n(q[0], q[1], q[2]);
+  const double len = n.norm();
+  if (!(std::isfinite(len) && len > 0.5)) return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
+  n /= len;
+  const Vector3d b1 = n.unitOrthogonal();
+  const Vector3d b2 = n.cross(b1);
+  double u[kMaxValence + 3], w[kMaxValence + 3], d[kMaxValence + 3];
+  const int32_t *first = rings.ring_begin(v), *last = rings.ring_end(v);
+  const int count = mesh.precise_points.size() == mesh.points.size()
+                        ? ring_coordinates(mesh.precise_points.data(), v, first, last, b1, b2, n, u, w, d)
+                        : ring_coordinates(mesh.points.data(), v, first, last, b1, b2, n, u, w, d);
+  if (count < fit_terms(FitModel::SeedQuadratic)) return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
+  for (int j = count; j % 4; ++j) u[j] = w[j] = d[j] = 0.0;
+  HeightFit fit;  // fu = fv = 0: principal_curvatures_inline folds them away
+  if (!seed_fit(u, w, d, count, fit)) return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
+  if (rings.nonmanifold(v)) r.flags |= kCurvatureNonmanifold;
+  r.curvature = principal_curvatures_inline(fit, b1, b2, n);
+  return r;
+}
+
+}  // namespace isoform

@@ -1,0 +1,16 @@
+// The seed's method (4.28) at one vertex by a short path: the one-ring read
+// straight from the ring table, the given normal, the 3 x 3 fit and Theorem
+// 4.3, with no copies of the ring or the points.
+#pragma once
+
+#include "vertex_fit.h"
+
+namespace isoform {
+
+// fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, scratch), bit for bit:
+// the vertices whose first fit settles them (a usable normal, three points
+// or more, a conditioned system: nearly all) take the short path, the rest
+// go through fit_vertex.
+VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, VertexFitScratch& scratch);
+
+}  // namespace isoform

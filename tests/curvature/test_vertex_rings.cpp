@@ -1,0 +1,119 @@
+// The one-ring table (VertexRings) on hand-built fans, against the order and
+// flags worked out by hand, on both of its paths (up to 8 triangles at a
+// vertex and more); and the seed's short path (fit_seed_vertex) against
+// fit_vertex, bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "libcore/curvature/seed_vertex.h"
+#include "libcore/curvature/vertex_rings.h"
+#include "libcore/mesh_normals.h"
+#include "truth.h"
+
+using namespace isoform;
+
+namespace {
+
+std::vector<int32_t> ring_of(const VertexRings& r, int32_t v) { return {r.ring_begin(v), r.ring_end(v)}; }
+
+// Vertex 0 at the centre of `count` triangles (0, k, k + 1) around it, k = 1
+// .. count (the last closing back to 1 when closed), points on a circle.
+Mesh fan(int count, bool closed) {
+  Mesh m;
+  m.points = {0, 0, 0};
+  const int rim = closed ? count : count + 1;
+  for (int k = 0; k < rim; ++k) {
+    const double a = 6.283185307179586 * k / (closed ? count : 2 * count);
+    m.points.insert(m.points.end(), {float(std::cos(a)), float(std::sin(a)), 0.0f});
+  }
+  for (int k = 1; k <= count; ++k) m.triangles.insert(m.triangles.end(), {0, k, closed && k == count ? 1 : k + 1});
+  return m;
+}
+
+}  // namespace
+
+TEST(VertexRings, ClosedFansKeepTheOrderOfFirstMeetingOnBothPaths) {
+  for (int count : {3, 6, 8, 9, 12, 40}) {  // 2 x count entries: up to 16 in the table, more by stamps
+    const Mesh m = fan(count, true);
+    const VertexRings r(m);
+    // Triangle k meets k, then k + 1: the rim in order.
+    std::vector<int32_t> expected;
+    for (int k = 1; k <= count; ++k) expected.push_back(k);
+    EXPECT_EQ(ring_of(r, 0), expected) << count << " triangles";
+    EXPECT_FALSE(r.on_boundary(0));
+    EXPECT_FALSE(r.nonmanifold(0));
+    // A rim vertex k (2 <= k < count) meets 0, k + 1 in triangle k - 1's
+    // order: (0, k - 1, k) gives 0 then k - 1, then (0, k, k + 1) gives k + 1, 0.
+    EXPECT_EQ(ring_of(r, 2), (std::vector<int32_t>{0, 1, 3}));
+    EXPECT_TRUE(r.on_boundary(2));  // the rim edges have one triangle each
+    EXPECT_FALSE(r.nonmanifold(2));
+  }
+}
+
+TEST(VertexRings, OpenFansAreBoundaryAndExtraTrianglesNonmanifold) {
+  for (int count : {4, 11}) {
+    Mesh m = fan(count, false);
+    const VertexRings open(m);
+    EXPECT_EQ(open.valence(0), size_t(count + 1));
+    EXPECT_TRUE(open.on_boundary(0));
+    EXPECT_FALSE(open.nonmanifold(0));
+    // A third triangle on the inner edge (0, 2): non-manifold at 0 and 2,
+    // not at 1 or 3.
+    m.points.insert(m.points.end(), {0.5f, 0.5f, 1.0f});
+    const int32_t top = int32_t(m.vertex_count()) - 1;
+    m.triangles.insert(m.triangles.end(), {0, 2, top});
+    const VertexRings three(m);
+    EXPECT_TRUE(three.nonmanifold(0));
+    EXPECT_TRUE(three.nonmanifold(2));
+    EXPECT_FALSE(three.nonmanifold(1));
+    EXPECT_FALSE(three.nonmanifold(3));
+    EXPECT_EQ(three.ring_begin(0)[three.valence(0) - 1], top);  // met last
+  }
+}
+
+TEST(VertexRings, TwoFansAtOneVertexAndRepeatedCornersAndIsolatedVertices) {
+  // Two triangles touching only at vertex 0 (a bow tie), a degenerate
+  // triangle (4, 4, 5) that is ignored and a vertex 6 that no triangle uses.
+  Mesh m;
+  m.points.assign(3 * 7, 0.0f);
+  m.triangles = {0, 1, 2, 0, 3, 4, 4, 4, 5};
+  const VertexRings r(m);
+  EXPECT_EQ(ring_of(r, 0), (std::vector<int32_t>{1, 2, 3, 4}));
+  EXPECT_TRUE(r.nonmanifold(0));
+  EXPECT_TRUE(r.on_boundary(0));
+  EXPECT_FALSE(r.nonmanifold(1));
+  EXPECT_EQ(ring_of(r, 4), (std::vector<int32_t>{0, 3}));
+  EXPECT_EQ(r.valence(5), 0u);
+  EXPECT_EQ(r.valence(6), 0u);
+}
+
+TEST(SeedVertex, ShortPathMatchesFitVertex) {
+  std::vector<truth::Exact> exact;
+  Mesh jittered = truth::shape_mesh(truth::Shape::Torus, 40, 0.25, 5, exact);
+  estimate_normals(jittered);
+  Mesh open = truth::graph_mesh(truth::table41_graphs()[4], 21);
+  estimate_normals(open);
+  // Unusable normals (zero, NaN) at some vertices, and float points only.
+  Mesh broken = open;
+  broken.normals[3 * 7] = broken.normals[3 * 7 + 1] = broken.normals[3 * 7 + 2] = 0.0f;
+  broken.normals[3 * 30 + 1] = std::nanf("");
+  broken.precise_points.clear();
+  for (const Mesh* m : {&jittered, &open, &broken}) {
+    const VertexRings rings(*m);
+    VertexFitScratch a, b;
+    for (int32_t v = 0; v < int32_t(m->vertex_count()); ++v) {
+      const VertexFitResult x = fit_seed_vertex(*m, rings, v, a);
+      const VertexFitResult y = fit_vertex(*m, rings, v, CurvatureMethod::Seed, 0, b);
+      EXPECT_EQ(x.flags, y.flags) << "vertex " << v;
+      EXPECT_EQ(std::memcmp(&x.curvature.k1, &y.curvature.k1, sizeof(double)), 0) << "vertex " << v;
+      EXPECT_EQ(std::memcmp(&x.curvature.k2, &y.curvature.k2, sizeof(double)), 0) << "vertex " << v;
+      EXPECT_EQ(std::memcmp(x.curvature.d1.data(), y.curvature.d1.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+      EXPECT_EQ(std::memcmp(x.curvature.d2.data(), y.curvature.d2.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+      EXPECT_EQ(std::memcmp(x.curvature.normal.data(), y.curvature.normal.data(), 3 * sizeof(double)), 0)
+          << "vertex " << v;
+    }
+  }
+}
