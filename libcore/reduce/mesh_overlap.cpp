@@ -49,7 +49,7 @@ struct Corners {
 // Float boxes rounded outward, so that they hold the double triangles.
 std::vector<Box> triangle_boxes(const Corners& corners, size_t nt) {
   std::vector<Box> boxes(nt);
-  for (size_t t = 0; t < nt; ++t) {
+  tbb::parallel_for(size_t(0), nt, [&](size_t t) {
     Point3 p[3];
     corners.of(t, p);
     Box& b = boxes[t];
@@ -62,7 +62,7 @@ std::vector<Box> triangle_boxes(const Corners& corners, size_t nt) {
       if (double(b.lo[k]) > lo) b.lo[k] = std::nextafter(b.lo[k], -INFINITY);
       if (double(b.hi[k]) < hi) b.hi[k] = std::nextafter(b.hi[k], INFINITY);
     }
-  }
+  });
   return boxes;
 }
 
@@ -112,12 +112,13 @@ struct CellRange {
 
 std::vector<CellRange> cell_ranges(const std::vector<Box>& boxes, const Grid& g) {
   std::vector<CellRange> ranges(boxes.size());
-  for (size_t t = 0; t < boxes.size(); ++t)
+  tbb::parallel_for(size_t(0), boxes.size(), [&](size_t t) {
     if (boxes[t].valid)
       for (int k = 0; k < 3; ++k) {
         ranges[t].lo[k] = int32_t(g.cell(boxes[t].lo[k], k));
         ranges[t].hi[k] = int32_t(g.cell(boxes[t].hi[k], k));
       }
+  });
   return ranges;
 }
 

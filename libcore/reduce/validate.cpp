@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "../errors.h"
 #include "mesh_overlap.h"
 
@@ -55,41 +58,111 @@ bool check_triangles(const Mesh& mesh, const Sink& sink) {
 }
 
 // Every undirected edge in at most two triangles, in opposite directions.
+// The edges are grouped by their lower vertex (a counting sort), each group
+// is sorted by (upper vertex, triangle) and checked in parallel, and the
+// offences are then reported serially in (lower, upper) order.
+struct EdgeUse {
+  int32_t hi, face;
+  int32_t forward;  // 1 when used as lo -> hi
+  bool operator<(const EdgeUse& o) const { return hi != o.hi ? hi < o.hi : face < o.face; }
+};
+
+// The offence of the edge group [first, last) of lower vertex lo, if any.
+bool edge_offence(int32_t lo, const EdgeUse* first, const EdgeUse* last, Offence* o) {
+  const size_t n = size_t(last - first);
+  if (n <= 1 || (n == 2 && first[0].forward != first[1].forward)) return false;
+  if (o) {
+    const std::string name = "edge (" + std::to_string(lo) + ", " + std::to_string(first->hi) + ")";
+    o->triangle = first->face;
+    if (n > 2)
+      o->problem = "the mesh is not manifold: " + name + " is shared by " + std::to_string(n) + " triangles";
+    else
+      o->problem = "the triangles are not consistently oriented: " + name + " is used in the same direction by triangles " +
+                   std::to_string(first[0].face) + " and " + std::to_string(first[1].face);
+  }
+  return true;
+}
+
+// Visits the groups of equal upper vertex in the sorted uses of one lower vertex.
+template <class Visit>
+bool for_edge_groups(const EdgeUse* first, const EdgeUse* last, Visit visit) {
+  for (const EdgeUse* i = first; i != last;) {
+    const EdgeUse* j = i;
+    while (j != last && j->hi == i->hi) ++j;
+    if (!visit(i, j)) return false;
+    i = j;
+  }
+  return true;
+}
+
 bool check_edges(const Mesh& mesh, const Sink& sink) {
-  struct Edge {
-    int32_t lo, hi;
-    int32_t forward;  // 1 when used as lo -> hi
-    int32_t face;
-  };
-  std::vector<Edge> edges;
-  edges.reserve(mesh.triangles.size());
-  for (size_t t = 0; t < mesh.triangle_count(); ++t)
+  const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
+  std::vector<size_t> start(nv + 1, 0);
+  for (size_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k)
+      ++start[size_t(std::min(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3])) + 1];
+  for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<size_t> fill(start.begin(), start.end() - 1);
+  std::vector<EdgeUse> uses(3 * nt);
+  for (size_t t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k) {
       const int32_t a = mesh.triangles[3 * t + k], b = mesh.triangles[3 * t + (k + 1) % 3];
-      edges.push_back({std::min(a, b), std::max(a, b), a < b ? 1 : 0, int32_t(t)});
+      uses[fill[size_t(std::min(a, b))]++] = {std::max(a, b), int32_t(t), a < b ? 1 : 0};
     }
-  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
-    return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.face < y.face;
+  std::vector<uint8_t> bad(nv, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) {
+      EdgeUse* first = uses.data() + start[v];
+      EdgeUse* last = uses.data() + start[v + 1];
+      std::sort(first, last);
+      bad[v] = !for_edge_groups(first, last, [&](const EdgeUse* i, const EdgeUse* j) {
+        return !edge_offence(int32_t(v), i, j, nullptr);
+      });
+    }
   });
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    const std::string name = "edge (" + std::to_string(edges[i].lo) + ", " + std::to_string(edges[i].hi) + ")";
-    Offence o;
-    o.triangle = edges[i].face;
-    if (j - i > 2)
-      o.problem = "the mesh is not manifold: " + name + " is shared by " + std::to_string(j - i) + " triangles";
-    else if (j - i == 2 && edges[i].forward == edges[i + 1].forward)
-      o.problem = "the triangles are not consistently oriented: " + name + " is used in the same direction by triangles " +
-                  std::to_string(edges[i].face) + " and " + std::to_string(edges[i + 1].face);
-    if (!o.problem.empty() && !sink(o)) return false;
-    i = j;
+  for (size_t v = 0; v < nv; ++v) {
+    if (!bad[v]) continue;
+    const bool go_on = for_edge_groups(uses.data() + start[v], uses.data() + start[v + 1],
+                                       [&](const EdgeUse* i, const EdgeUse* j) {
+                                         Offence o;
+                                         return !edge_offence(int32_t(v), i, j, &o) || sink(o);
+                                       });
+    if (!go_on) return false;
   }
   return true;
 }
 
 // Around each vertex the opposite edges of its triangles form one cycle or
 // one path; more than one is a non-manifold vertex (two fans meeting).
+bool one_fan(const Mesh& mesh, const int32_t* faces, size_t count, int32_t v, std::vector<std::array<int32_t, 2>>& link) {
+  link.clear();
+  for (size_t i = 0; i < count; ++i) {
+    const int32_t* t = &mesh.triangles[3 * size_t(faces[i])];
+    const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    link.push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+  }
+  if (link.size() < 2) return true;
+  // Walk from a path start (a source that is no target), else from any edge.
+  size_t first = 0;
+  for (size_t a = 0; a < link.size(); ++a) {
+    bool is_target = false;
+    for (const auto& e : link) is_target |= e[1] == link[a][0];
+    if (!is_target) first = a;
+  }
+  size_t visited = 1;
+  int32_t at = link[first][1];
+  for (size_t step = 0; step < link.size(); ++step) {
+    size_t next = link.size();
+    for (size_t a = 0; a < link.size(); ++a)
+      if (link[a][0] == at) next = a;
+    if (next == link.size() || next == first) break;
+    ++visited;
+    at = link[next][1];
+  }
+  return visited == link.size();
+}
+
+// The vertices are checked in parallel, the offences reported in order.
 bool check_vertex_fans(const Mesh& mesh, const Sink& sink) {
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   std::vector<int32_t> start(nv + 1, 0), faces(3 * nt);
@@ -98,33 +171,14 @@ bool check_vertex_fans(const Mesh& mesh, const Sink& sink) {
   std::vector<int32_t> fill(start.begin(), start.end() - 1);
   for (size_t t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k) faces[size_t(fill[size_t(mesh.triangles[3 * t + k])]++)] = int32_t(t);
-  std::vector<std::array<int32_t, 2>> link;
+  std::vector<uint8_t> bad(nv, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<std::array<int32_t, 2>> link;
+    for (size_t v = r.begin(); v != r.end(); ++v)
+      bad[v] = !one_fan(mesh, faces.data() + start[v], size_t(start[v + 1] - start[v]), int32_t(v), link);
+  });
   for (size_t v = 0; v < nv; ++v) {
-    link.clear();
-    for (int32_t i = start[v]; i < start[v + 1]; ++i) {
-      const int32_t* t = &mesh.triangles[3 * size_t(faces[size_t(i)])];
-      const int k = t[0] == int32_t(v) ? 0 : t[1] == int32_t(v) ? 1 : 2;
-      link.push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
-    }
-    if (link.size() < 2) continue;
-    // Walk from a path start (a source that is no target), else from any edge.
-    size_t first = 0;
-    for (size_t a = 0; a < link.size(); ++a) {
-      bool is_target = false;
-      for (const auto& e : link) is_target |= e[1] == link[a][0];
-      if (!is_target) first = a;
-    }
-    size_t visited = 1;
-    int32_t at = link[first][1];
-    for (size_t step = 0; step < link.size(); ++step) {
-      size_t next = link.size();
-      for (size_t a = 0; a < link.size(); ++a)
-        if (link[a][0] == at) next = a;
-      if (next == link.size() || next == first) break;
-      ++visited;
-      at = link[next][1];
-    }
-    if (visited == link.size()) continue;
+    if (!bad[v]) continue;
     Offence o;
     o.problem = "the mesh is not manifold at vertex " + std::to_string(v) + ": its triangles form more than one fan";
     o.vertex = int32_t(v);
