@@ -64,14 +64,16 @@ double sample_pass(const isoform::TriangleSurface& s, const std::vector<isoform:
 }
 
 // The same pass through the side-vertex surface's batch entry point
-// (batch_eval.h): each triangle's lattice in one call.
+// (batch_eval.h): each triangle's lattice in one call, with one plan of the
+// lattice (which samples share a ray) made inside the timed pass.
 double batch_pass(const isoform::patch::SideVertexSurface& s, const std::vector<double>& u,
                   const std::vector<double>& v, bool second, double& checksum, long long& failed) {
   std::vector<isoform::SurfaceSample> out(u.size());
   std::unique_ptr<bool[]> ok(new bool[u.size()]);
   const double start = thread_cpu_seconds();
+  const isoform::patch::BatchPlan plan(s.options(), u.data(), v.data(), u.size());
   for (size_t t = 0; t < s.triangle_count(); ++t) {
-    isoform::patch::evaluate_batch(s, t, u.data(), v.data(), u.size(), out.data(), ok.get(), second);
+    isoform::patch::evaluate_batch(s, t, plan, out.data(), ok.get(), second);
     for (size_t k = 0; k < u.size(); ++k) {
       if (ok[k]) checksum += out[k].point[0] + out[k].normal[2] + out[k].duu[1];
       else ++failed;

@@ -72,10 +72,7 @@ ISOFORM_JET_INLINE void edge_value(const EdgePoly& e, L tc, double sigma, V1<S>&
   const V1<S> nc = cross_c(e.p, unit_l(tangent));
   const L theta = e.theta0 + tc * e.dtheta;
   L st, ct;
-  for (int l = 0; l < 4; ++l) {
-    st[l] = std::sin(theta[l]);
-    ct[l] = std::cos(theta[l]);
-  }
+  lane_sincos(theta, st, ct);
   const double dth = sigma * e.dtheta;
   const J1<S> cos_t(ct, -st * dth, -ct * (dth * dth)), sin_t(st, ct * dth, -st * (dth * dth));
   normal = V1<S>(cos_t * nc.x + sin_t * e.p.x, cos_t * nc.y + sin_t * e.p.y, cos_t * nc.z + sin_t * e.p.z);

@@ -23,6 +23,41 @@ ISOFORM_JET_INLINE L lane_sqrt(L x) {
   return L{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
 }
 
+// Rows a, b, c, d of a 4 x 4 matrix become its columns.
+ISOFORM_JET_INLINE void transpose4(L& a, L& b, L& c, L& d) {
+  const L t0 = __builtin_shuffle(a, b, M{0, 4, 2, 6}), t1 = __builtin_shuffle(a, b, M{1, 5, 3, 7});
+  const L t2 = __builtin_shuffle(c, d, M{0, 4, 2, 6}), t3 = __builtin_shuffle(c, d, M{1, 5, 3, 7});
+  a = __builtin_shuffle(t0, t2, M{0, 1, 4, 5});
+  b = __builtin_shuffle(t1, t3, M{0, 1, 4, 5});
+  c = __builtin_shuffle(t0, t2, M{2, 3, 6, 7});
+  d = __builtin_shuffle(t1, t3, M{2, 3, 6, 7});
+}
+
+// sin and cos per lane, to about an ulp of libm's: x = k pi/2 + r with
+// |r| <= pi/4 (pi/2 in two parts: k pi/2 is exact for the small k of
+// angles), Taylor series to r^17 / r^16 (the next terms are below 1e-17 on
+// |r| <= pi/4), and the quadrant k mod 4 picks and signs the two.
+ISOFORM_JET_INLINE void lane_sincos(L x, L& sin_x, L& cos_x) {
+  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52: adds to round
+  constexpr double kHalfPiHi = double(float(M_PI_2)), kHalfPiLo = M_PI_2 - kHalfPiHi;
+  const L k = (x * M_2_PI + kRound) - kRound;
+  const L r = (x - k * kHalfPiHi) - k * kHalfPiLo;
+  const L r2 = r * r;
+  // 1/n! for the odd (sine) and even (cosine) terms.
+  const double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880, s11 = -1.0 / 39916800,
+               s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0, s17 = 1.0 / 355687428096000.0;
+  const double c2 = -0.5, c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800,
+               c12 = 1.0 / 479001600.0, c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0;
+  const L ps = s3 + r2 * (s5 + r2 * (s7 + r2 * (s9 + r2 * (s11 + r2 * (s13 + r2 * (s15 + r2 * s17))))));
+  const L pc = c2 + r2 * (c4 + r2 * (c6 + r2 * (c8 + r2 * (c10 + r2 * (c12 + r2 * (c14 + r2 * c16))))));
+  const L sr = r + (r * r2) * ps, cr = 1.0 + r2 * pc;
+  const M q = __builtin_convertvector(k, M);
+  const M swap = (q & 1) != 0, sin_negative = (q & 2) != 0, cos_negative = ((q + 1) & 2) != 0;
+  const L s = swap ? cr : sr, c = swap ? sr : cr;
+  sin_x = sin_negative ? -s : s;
+  cos_x = cos_negative ? -c : c;
+}
+
 // One variable (t): value, d/dt and, when S, d2/dt2.
 template <bool S>
 struct J1 {

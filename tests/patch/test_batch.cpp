@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "libcore/patch/batch_eval.h"
+#include "libcore/patch/lanes_jet.h"
 #include "libcore/patch/side_vertex_surface.h"
 #include "patch_fixtures.h"
 
@@ -51,8 +52,11 @@ Worst compare_batch(const SideVertexSurface& s, int n, bool second, BatchIsa isa
   w.lattice = long(u.size());
   std::vector<SurfaceSample> out(u.size());
   std::unique_ptr<bool[]> ok(new bool[u.size()]);
+  // One plan for every triangle, made for the default blend (a surface
+  // with the other blend gets a plan of its own per call).
+  const BatchPlan plan(PatchOptions{}, su.data(), sv.data(), su.size());
   for (size_t t = 0; t < s.triangle_count(); ++t) {
-    evaluate_batch(s, t, su.data(), sv.data(), su.size(), out.data(), ok.get(), second, isa);
+    evaluate_batch(s, t, plan, out.data(), ok.get(), second, isa);
     for (size_t k = 0; k < su.size(); ++k) {
       SurfaceSample f, r;
       const bool fast_ok = s.evaluate_order(t, su[k], sv[k], f, second);
@@ -133,6 +137,32 @@ TEST(Batch, RefusesWhatEvaluateRefuses) {
   EXPECT_TRUE(ok[4]);
   evaluate_batch(s, s.triangle_count(), u + 4, v + 4, 1, out, ok, true);
   EXPECT_FALSE(ok[0]);
+}
+
+// The lanes' sin and cos (polynomials after reduction by pi/2) against libm,
+// over the turn angles' range and beyond, across every quadrant.
+TEST(Batch, LaneSinCosMatchLibm) {
+  double worst = 0.0;
+  long checked = 0;
+  for (int k = -40000; k <= 40000; k += 4) {
+    lanes::L x;
+    for (int l = 0; l < 4; ++l) x[l] = 7.0 * double(k + l) / 40000.0 + 1e-3 * l;
+    lanes::L s, c;
+    lanes::lane_sincos(x, s, c);
+    for (int l = 0; l < 4; ++l) {
+      worst = std::max({worst, std::abs(s[l] - std::sin(x[l])), std::abs(c[l] - std::cos(x[l]))});
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 80004);
+  EXPECT_LT(worst, 4e-16);
+  lanes::L s, c;
+  lanes::lane_sincos(lanes::L{0.0, M_PI_2, M_PI, -M_PI_2}, s, c);
+  EXPECT_EQ(s[0], 0.0);
+  EXPECT_EQ(c[0], 1.0);
+  EXPECT_NEAR(s[1], 1.0, 1e-16);
+  EXPECT_NEAR(c[2], -1.0, 1e-16);
+  EXPECT_NEAR(s[3], -1.0, 1e-16);
 }
 
 }  // namespace
