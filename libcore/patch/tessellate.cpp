@@ -6,12 +6,15 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "../errors.h"
 #include "../topology.h"
+#include "batch_eval.h"
 
 namespace isoform::patch {
 namespace {
@@ -139,31 +142,45 @@ Mesh tessellate(const SideVertexSurface& s, int level, const Progress& progress,
   const size_t per = size_t(n) * size_t(n);
   m.triangles.assign(3 * s.triangle_count() * per, 0);
   std::atomic<long long> flat{0}, reversed{0};
+  // The interior lattice (i, j), evaluated per triangle in one batch.
+  std::vector<int> li, lj;
+  std::vector<double> lu, lv;
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i + j < n; ++i) {
+      li.push_back(i);
+      lj.push_back(j);
+      lu.push_back(double(i) / n);
+      lv.push_back(double(j) / n);
+    }
+  const BatchPlan plan(s.options(), lu.data(), lv.data(), lu.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, s.triangle_count(), 64), [&](const tbb::blocked_range<size_t>& r) {
     if (cancelled) return;
+    std::vector<SurfaceSample> xs(lu.size());
+    std::unique_ptr<bool[]> ok(new bool[lu.size() + 1]);
     for (size_t t = r.begin(); t < r.end(); ++t) {
       const double side = data_side(s, t);
-      for (int j = 1; j < n; ++j)
-        for (int i = 1; i + j < n; ++i) {
-          const double u = double(i) / n, v = double(j) / n;
-          SurfaceSample x;
-          const size_t at = grid.index(t, i, j);
-          V3d data = (1 - u - v) * s.vertex_normal(size_t(s.triangle_vertex(t, 0))) +
-                     u * s.vertex_normal(size_t(s.triangle_vertex(t, 1))) +
-                     v * s.vertex_normal(size_t(s.triangle_vertex(t, 2)));
-          if (s.evaluate_order(t, u, v, x, false)) {
-            const V3d normal = side * V3d::from(x.normal);
-            if (dot(normal, data) < 0.0) reversed.fetch_add(1);
-            put(m, at, V3d::from(x.point), normal);
-          } else {
-            // NOTE: undefined data (never NaN in the output): the flat point.
-            flat.fetch_add(1);
-            const V3d p = (1 - u - v) * s.vertex(size_t(s.triangle_vertex(t, 0))) +
-                          u * s.vertex(size_t(s.triangle_vertex(t, 1))) + v * s.vertex(size_t(s.triangle_vertex(t, 2)));
-            const double len = norm(data);
-            put(m, at, p, len > 0 ? (1 / len) * data : V3d(0, 0, 1));
-          }
+      evaluate_batch(s, t, plan, xs.data(), ok.get(), false);
+      for (size_t k = 0; k < lu.size(); ++k) {
+        const int i = li[k], j = lj[k];
+        const double u = lu[k], v = lv[k];
+        const SurfaceSample& x = xs[k];
+        const size_t at = grid.index(t, i, j);
+        V3d data = (1 - u - v) * s.vertex_normal(size_t(s.triangle_vertex(t, 0))) +
+                   u * s.vertex_normal(size_t(s.triangle_vertex(t, 1))) +
+                   v * s.vertex_normal(size_t(s.triangle_vertex(t, 2)));
+        if (ok[k]) {
+          const V3d normal = side * V3d::from(x.normal);
+          if (dot(normal, data) < 0.0) reversed.fetch_add(1);
+          put(m, at, V3d::from(x.point), normal);
+        } else {
+          // NOTE: undefined data (never NaN in the output): the flat point.
+          flat.fetch_add(1);
+          const V3d p = (1 - u - v) * s.vertex(size_t(s.triangle_vertex(t, 0))) +
+                        u * s.vertex(size_t(s.triangle_vertex(t, 1))) + v * s.vertex(size_t(s.triangle_vertex(t, 2)));
+          const double len = norm(data);
+          put(m, at, p, len > 0 ? (1 / len) * data : V3d(0, 0, 1));
         }
+      }
       int32_t* out = &m.triangles[3 * t * per];
       for (int j = 0; j < n; ++j)
         for (int i = 0; i + j < n; ++i) {
