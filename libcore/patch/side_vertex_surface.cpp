@@ -144,7 +144,12 @@ void SideVertexSurface::build_edges(const std::vector<EdgeTension>& tension) {
     stats_.fallback_plane_edges += (f & kConicFallbackPlane) ? 1 : 0;
   }
   polys_.resize(edges);
-  for (size_t e = 0; e < edges; ++e) polys_[e] = make_edge_poly(curves_[e]);
+  end_derivatives_.resize(2 * edges);
+  for (size_t e = 0; e < edges; ++e) {
+    polys_[e] = make_edge_poly(curves_[e]);
+    end_derivatives_[2 * e] = conic_eval(curves_[e].conic, 0.0).tangent;
+    end_derivatives_[2 * e + 1] = conic_eval(curves_[e].conic, 1.0).tangent;
+  }
 }
 
 bool SideVertexSurface::point(size_t triangle, double u, double v, V3d& out) const {
@@ -163,9 +168,8 @@ namespace {
 // at p (s = 0, weight s on q): there the surface is the edge's curve.
 V3d edge_derivative(const SideVertexSurface& s, size_t tri, int p, int q) {
   const TriangleEdge te = s.triangle_edge(tri, 3 - p - q);
-  const Conic<double>& c = s.edge_curve(size_t(te.edge)).conic;
   const bool forward = s.triangle_vertex(tri, q) > s.triangle_vertex(tri, p);
-  const V3d d = conic_eval(c, forward ? 0.0 : 1.0).tangent;
+  const V3d& d = s.edge_end_derivative(size_t(te.edge), forward ? 0 : 1);
   return forward ? d : -d;
 }
 

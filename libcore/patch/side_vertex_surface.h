@@ -88,6 +88,9 @@ class SideVertexSurface final : public TriangleSurface {
   // The shared curve of mesh edge e and its end vertices (lower first).
   const EdgeCurve& edge_curve(size_t e) const { return curves_[e]; }
   const EdgePoly& edge_poly(size_t e) const { return polys_[e]; }
+  // d/dt of edge e's curve at its end `end` (0: t = 0, 1: t = 1), for the
+  // corner rule.
+  const V3d& edge_end_derivative(size_t e, int end) const { return end_derivatives_[2 * e + size_t(end)]; }
   size_t edge_count() const { return curves_.size(); }
   int32_t edge_vertex(size_t e, int end) const { return edge_vertices_[2 * e + end]; }
   // Edge slot i of triangle t is the edge opposite its vertex i.
@@ -116,6 +119,7 @@ class SideVertexSurface final : public TriangleSurface {
   std::vector<TriangleEdge> triangle_edges_;
   std::vector<EdgeCurve> curves_;
   std::vector<EdgePoly> polys_;
+  std::vector<V3d> end_derivatives_;
   std::vector<double> edge_inv_tension_;
   double inv_tension_ = 0.0;
   PatchStats stats_;
