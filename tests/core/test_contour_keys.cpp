@@ -1,0 +1,117 @@
+// The contour's shared-vertex keys: packed into one word where the grid's
+// extent allows (packed_keys.h), kept as pairs where it does not, with the
+// same mesh either way.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "libcore/contour/packed_keys.h"
+#include "mesh_checks.h"
+
+namespace isoform {
+namespace {
+
+std::vector<BrickMesh> bricks_with(const std::vector<std::pair<uint64_t, int32_t>>& shared) {
+  BrickMesh bm;
+  bm.shared = shared.data();
+  bm.shared_count = uint32_t(shared.size());
+  return {bm};
+}
+
+TEST(PackedKeys, PackingKeepsTheOrderOfKeyVertexPairs) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coord(-300, 700), slot(0, 6), vertex(0, 99999);
+  std::vector<std::pair<uint64_t, int32_t>> shared;
+  for (int n = 0; n < 20000; ++n)
+    shared.emplace_back(edge_key(coord(rng), coord(rng) / 3, coord(rng) * 7, slot(rng)), vertex(rng));
+  shared.push_back(shared[17]);  // a key met twice, with another vertex
+  shared.back().second = 4;
+  const PackedLayout layout = packed_layout(bricks_with(shared), 100000);
+  ASSERT_TRUE(layout.fits);
+  EXPECT_EQ(layout.vertex_bits, 17);
+  std::vector<std::pair<uint64_t, uint64_t>> pairs;
+  std::vector<uint64_t> words;
+  for (const auto& s : shared) {
+    pairs.emplace_back(s.first, uint64_t(s.second));
+    words.push_back(layout.pack(s.first, uint64_t(s.second)));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::sort(words.begin(), words.end());
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    EXPECT_EQ(words[i] & ((uint64_t(1) << 17) - 1), pairs[i].second);
+    if (i > 0) {
+      EXPECT_EQ(words[i] >> 17 == words[i - 1] >> 17, pairs[i].first == pairs[i - 1].first);
+    }
+  }
+}
+
+TEST(PackedKeys, KeysSpanningTheWholeIndexRangeDoNotFit) {
+  const std::vector<std::pair<uint64_t, int32_t>> shared = {{edge_key(-500000, -500000, -500000, 0), 0},
+                                                            {edge_key(500000, 500000, 500000, 2), 1}};
+  // 20 bits per axis, 3 for the slot: 63, so no vertex index above 1 fits.
+  EXPECT_TRUE(packed_layout(bricks_with(shared), 2).fits);
+  EXPECT_FALSE(packed_layout(bricks_with(shared), 3).fits);
+  const std::vector<std::pair<uint64_t, int32_t>> near = {{edge_key(-5, 0, 3, 0), 0}, {edge_key(9, 2, 3, 2), 1}};
+  EXPECT_TRUE(packed_layout(bricks_with(near), 2).fits);
+}
+
+// Two balls of radius 5 in bricks of 8^3 cells, their centres `apart`
+// cells from the origin on either side along every axis.
+class TwoBalls : public BrickSource {
+ public:
+  explicit TwoBalls(int apart) : apart_(apart) {
+    for (int side : {-1, 1})
+      for (int b = 0; b < 8; ++b)
+        origins_.push_back({side * apart + 8 * ((b & 1) - 1), side * apart + 8 * (((b >> 1) & 1) - 1),
+                            side * apart + 8 * ((b >> 2) - 1)});
+  }
+  size_t brick_count() const override { return origins_.size(); }
+  void fill(size_t index, Brick& out) const override {
+    const Index3& o = origins_[index];
+    out.resize(o, {8, 8, 8}, false);
+    for (int k = -1; k <= 9; ++k)
+      for (int j = -1; j <= 9; ++j)
+        for (int i = -1; i <= 9; ++i) out.samples[out.at(i, j, k)] = float(f(o[0] + i, o[1] + j, o[2] + k));
+  }
+
+ private:
+  double f(int x, int y, int z) const {
+    const int c = x < 0 ? -apart_ : apart_;
+    return std::sqrt(double(x - c) * (x - c) + double(y - c) * (y - c) + double(z - c) * (z - c) + 0.3) - 5.0;
+  }
+  int apart_;
+  std::vector<Index3> origins_;
+};
+
+TEST(PackedKeys, FarApartAndNearBallsGiveTheSameClosedMesh) {
+  // 400000 cells apart the keys need more than 64 bits with the vertex
+  // (the pairs' path); 40 apart they pack. The same cells cross, so the
+  // counts agree (the fans may differ: float points 4e5 from the origin
+  // round differently, and the apex follows the areas).
+  Mesh meshes[2];
+  int at = 0;
+  for (int apart : {400000, 40}) {
+    ScalarGrid grid;
+    grid.grid_class = GridClass::LevelSet;
+    grid.bricks = std::make_shared<TwoBalls>(apart);
+    std::vector<std::pair<uint64_t, int32_t>> corners = {{edge_key(-apart - 8, -apart - 8, -apart - 8, 0), 0},
+                                                         {edge_key(apart + 8, apart + 8, apart + 8, 0), 1}};
+    EXPECT_EQ(packed_layout(bricks_with(corners), 3000).fits, apart == 40);
+    meshes[at++] = test::run_contour(grid, 0.0, ContourMethod::Cells, 2);
+  }
+  for (const Mesh& m : meshes) {
+    EXPECT_EQ(m.part_count, 2);
+    EXPECT_EQ(m.stats.boundary_edges, 0);
+    EXPECT_EQ(m.stats.nonmanifold_edges, 0);
+    EXPECT_EQ(m.stats.inconsistent_edges, 0);
+    EXPECT_EQ(m.stats.euler_characteristic, 4);
+  }
+  EXPECT_EQ(meshes[0].triangles.size(), meshes[1].triangles.size());
+  EXPECT_EQ(meshes[0].points.size(), meshes[1].points.size());
+  EXPECT_GT(meshes[0].points.size(), 300u);
+}
+
+}  // namespace
+}  // namespace isoform
