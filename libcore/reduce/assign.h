@@ -70,8 +70,13 @@ void project_faces(const std::vector<std::array<int, 3>>& tri, const Projection&
 }
 
 // The face x projects into (or nearest to), and its barycentric coordinates.
-inline int containing_face(const std::vector<ProjectedFace>& faces, const Eigen::Vector2d& x, double* l) {
+// `hint` (a face index, or -1) is tried first: the projected faces do not
+// overlap, so a face holding x with every barycentric coordinate clear of
+// rounding is the one the full scan would choose.
+inline int containing_face(const std::vector<ProjectedFace>& faces, const Eigen::Vector2d& x, double* l,
+                           int hint = -1) {
   double best = -std::numeric_limits<double>::infinity(), tmp[3];
+  if (hint >= 0 && size_t(hint) < faces.size() && faces[size_t(hint)].inside(x(0), x(1), l) > 1e-9) return hint;
   int chosen = 0;
   l[0] = 1;
   l[1] = l[2] = 0;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "queue.h"
+#include "prefetch.h"
 
 namespace isoform::reduce {
 namespace {
@@ -142,6 +143,13 @@ Outcome Remover::try_remove(int f, int pass) {
   const PlateletStatus status = gather_platelet(w_, f, mark_, &token_, platelet_);
   if (status == PlateletStatus::Corona) return Outcome::Corona;
   if (status == PlateletStatus::Nonmanifold) return Outcome::Nonmanifold;
+  // NOTE: what the fit, the tests and the commit read next, asked for
+  // together (only timing depends on it; see run_passes).
+  tracker_.prefetch_lists(platelet_);
+  for (int v : platelet_.ring) {
+    prefetch(&w_.pos[size_t(v)]);
+    prefetch(&w_.vfaces[size_t(v)]);
+  }
   bool plane = false;
   const Frame frame = platelet_frame(w_, platelet_, &plane);
   if (!plane) return Outcome::Flip;
@@ -164,6 +172,8 @@ Outcome Remover::try_remove(int f, int pass) {
     // Kept only when the moved point still passes every test.
     if (refined.allFinite() && half_plane_ok(frame, refined) && faces_ok(frame, refined)) point = refined;
   }
+  for (int v : platelet_.ring)
+    if (!w_.vfaces[size_t(v)].empty()) prefetch(w_.vfaces[size_t(v)].data());
   if (tracker_.active()) {
     bool rms_stop = false, deferred = false;
     if (!tracker_.check(w_, platelet_, point, faces_, &rms_stop, &deferred))

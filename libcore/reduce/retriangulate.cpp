@@ -41,8 +41,13 @@ bool edge_exists(const WorkMesh& w, const std::vector<uint32_t>& mark, uint32_t 
 }
 
 
-// Tries to swap the diagonal shared by faces i and j; true if it did.
-bool try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
+// What try_swap found for a pair of faces.
+enum class Swap { Done, Refused, NoEdgeLeft };
+
+// Tries to swap the diagonal shared by faces i and j. Refused depends only
+// on the two faces (no shared edge, not convex, not better); NoEdgeLeft
+// (the new diagonal is an edge already) also on the others.
+Swap try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
               const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces, size_t i, size_t j) {
   const auto& ti = faces.tri[i];
   const auto& tj = faces.tri[j];
@@ -51,22 +56,22 @@ bool try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Ei
     for (int l = 0; l < 3; ++l) {
       if (tj[size_t(l)] != y || tj[size_t((l + 1) % 3)] != x) continue;
       const int o1 = ti[size_t((k + 2) % 3)], o2 = tj[size_t((l + 2) % 3)];
-      if (o1 == o2) return false;
+      if (o1 == o2) return Swap::Refused;
       auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
       const Eigen::Vector3d quad[4] = {P(x), P(o2), P(y), P(o1)};
-      if (!convex_projection(frame, quad)) return false;
+      if (!convex_projection(frame, quad)) return Swap::Refused;
       const double before = std::min(angle_weight(P(x), P(y), P(o1)), angle_weight(P(y), P(x), P(o2)));
       const double after = std::min(angle_weight(P(o1), P(x), P(o2)), angle_weight(P(o2), P(y), P(o1)));
       // NOTE: a margin, so that rounding cannot swap a diagonal back and forth.
-      if (!(after > before + 1e-12)) return false;
-      if (edge_exists(w, mark, token, faces, o1, o2)) return false;
+      if (!(after > before + 1e-12)) return Swap::Refused;
+      if (edge_exists(w, mark, token, faces, o1, o2)) return Swap::NoEdgeLeft;
       faces.tri[i] = {o1, x, o2};
       faces.tri[j] = {o2, y, o1};
       faces.source[i] = faces.source[j] = -1;
-      return true;
+      return Swap::Done;
     }
   }
-  return false;
+  return Swap::Refused;
 }
 
 }  // namespace
@@ -86,16 +91,31 @@ int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const
   int swaps = 0;
   // Each swap raises the sorted list of angle weights, so this ends; the cap
   // only guards against rounding.
-  const int cap = 4 * int(faces.tri.size() * faces.tri.size()) + 8;
+  const size_t n = faces.tri.size();
+  const int cap = 4 * int(n * n) + 8;
+  // NOTE: after a swap the scan starts again, and most pairs are the same
+  // two faces as before; a pair refused for what depends on the two faces
+  // alone is not tried again until one of them changes. Each face carries
+  // the number of the swap that last made it (0: the fan), each pair the
+  // numbers it was refused with.
+  static thread_local std::vector<int> made;
+  static thread_local std::vector<std::array<int, 2>> refused;
+  made.assign(n, 0);
+  refused.assign(n * n, {-1, -1});
   bool changed = true;
   while (changed && swaps < cap) {
     changed = false;
-    for (size_t i = 0; i < faces.tri.size() && !changed; ++i)
-      for (size_t j = i + 1; j < faces.tri.size() && !changed; ++j)
-        if (try_swap(w, p, frame, point, mark, token, faces, i, j)) {
-          ++swaps;
-          changed = true;
-        }
+    for (size_t i = 0; i < n && !changed; ++i)
+      for (size_t j = i + 1; j < n && !changed; ++j) {
+        std::array<int, 2>& seen = refused[i * n + j];
+        if (seen[0] == made[i] && seen[1] == made[j]) continue;
+        const Swap s = try_swap(w, p, frame, point, mark, token, faces, i, j);
+        if (s == Swap::Refused) seen = {made[i], made[j]};
+        if (s != Swap::Done) continue;
+        ++swaps;
+        made[i] = made[j] = swaps;
+        changed = true;
+      }
   }
   return swaps;
 }

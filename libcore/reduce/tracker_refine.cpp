@@ -39,6 +39,15 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
   if (!graph) projection.frame = &frame;
   if (!nearest) project_faces(faces.tri, projection, P, projected_);
   double num = 0, den = 0, largest = 0;
+  int hint = -1;  // the last vertex's face: the next one is mostly in it too
+  // NOTE: the lists are read in weight order, all over memory: their first
+  // entries are asked for together before the walk (only timing depends on it).
+  for (int f : p.faces) {
+    const int v = head_[size_t(f)];
+    if (v < 0) continue;
+    prefetch(&original_[size_t(v)]);
+    prefetch(&next_[size_t(v)]);
+  }
   assigned_.clear();
   assigned_valid_ = true;
   for (int f : p.faces)
@@ -48,7 +57,8 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
       // nearest; else: the one its projection onto P falls in) and x's
       // barycentric weight of p there.
       double l[3] = {1, 0, 0};
-      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(projected_, projection(x), l);
+      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(projected_, projection(x), l, hint);
+      hint = chosen;
       assigned_.push_back(chosen);
       const auto& t = faces.tri[size_t(chosen)];
       const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
