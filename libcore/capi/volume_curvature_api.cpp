@@ -71,6 +71,7 @@ isoform_status isoform_volume_curvature(const isoform_volume* volume, int grid,
     const isoform::Progress sink(progress);
     sink.stage(ISOFORM_STAGE_LOAD);
     const auto scalar = volume->grid(grid);  // throws Unsupported for vector grids
+    sink.stage(ISOFORM_STAGE_CURVATURE);     // the fits' fraction is over bricks
     auto result = isoform::graph_curvature_volume(*scalar, volume->file->path(), o, sink);
     sink.stage(ISOFORM_STAGE_DONE);
     auto handle = std::make_unique<isoform_volume>();
