@@ -25,17 +25,24 @@ double Affine::determinant() const {
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
+void Affine::cofactors(double c[3][3]) const {
+  c[0][0] = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+  c[0][1] = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+  c[0][2] = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+  c[1][0] = m[0][2] * m[2][1] - m[0][1] * m[2][2];
+  c[1][1] = m[0][0] * m[2][2] - m[0][2] * m[2][0];
+  c[1][2] = m[0][1] * m[2][0] - m[0][0] * m[2][1];
+  c[2][0] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+  c[2][1] = m[0][2] * m[1][0] - m[0][0] * m[1][2];
+  c[2][2] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+}
+
 Vec3d Affine::apply_normal(const Vec3d& n) const {
   // The inverse transpose equals the cofactor matrix divided by the
   // determinant; the division only scales, so the cofactors suffice, and the
   // sign of the determinant keeps the normal on the same side.
-  const double c[3][3] = {
-      {m[1][1] * m[2][2] - m[1][2] * m[2][1], m[1][2] * m[2][0] - m[1][0] * m[2][2],
-       m[1][0] * m[2][1] - m[1][1] * m[2][0]},
-      {m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
-       m[0][1] * m[2][0] - m[0][0] * m[2][1]},
-      {m[0][1] * m[1][2] - m[0][2] * m[1][1], m[0][2] * m[1][0] - m[0][0] * m[1][2],
-       m[0][0] * m[1][1] - m[0][1] * m[1][0]}};
+  double c[3][3];
+  cofactors(c);
   const double s = determinant() < 0 ? -1.0 : 1.0;
   Vec3d r;
   for (int a = 0; a < 3; ++a) r[a] = s * (c[a][0] * n[0] + c[a][1] * n[1] + c[a][2] * n[2]);

@@ -29,6 +29,9 @@ struct Affine {
   Vec3d apply_linear(const Vec3d& v) const;
   // The inverse transpose of the linear part (for normals), not normalised.
   Vec3d apply_normal(const Vec3d& n) const;
+  // The cofactor matrix of the linear part: the inverse transpose times the
+  // determinant (what apply_normal multiplies by, before the sign).
+  void cofactors(double c[3][3]) const;
   // The determinant of the linear part; negative flips orientation.
   double determinant() const;
   // Length of each index axis in world units.

@@ -31,17 +31,7 @@ uint64_t edge_key(int x, int y, int z, int slot) {
 BrickContourer::BrickContourer(const Affine& index_to_world, double isovalue, ContourMethod method)
     : xform_(index_to_world), iso_(isovalue), method_(method),
       slots_(method == ContourMethod::Tetra ? 7 : 3) {
-  // The cofactors of the linear part, as Affine::apply_normal computes them.
-  const double(&m)[3][4] = index_to_world.m;
-  const double c[3][3] = {
-      {m[1][1] * m[2][2] - m[1][2] * m[2][1], m[1][2] * m[2][0] - m[1][0] * m[2][2],
-       m[1][0] * m[2][1] - m[1][1] * m[2][0]},
-      {m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
-       m[0][1] * m[2][0] - m[0][0] * m[2][1]},
-      {m[0][1] * m[1][2] - m[0][2] * m[1][1], m[0][2] * m[1][0] - m[0][0] * m[1][2],
-       m[0][0] * m[1][1] - m[0][1] * m[1][0]}};
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) cofactor_[a][b] = c[a][b];
+  index_to_world.cofactors(cofactor_);
   normal_sign_ = index_to_world.determinant() < 0 ? -1.0 : 1.0;
   // For float samples f: f >= iso_above_ exactly when double(f) >= iso_,
   // and f == iso_float_ exactly when double(f) == iso_ (NaN when no float is).

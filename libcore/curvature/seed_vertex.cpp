@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ring_coordinates.h"
 #include "small_ldlt.h"
 
 namespace isoform {
@@ -16,27 +17,6 @@ using Eigen::Vector3d;
 
 // Rings longer than this go the general way (no fixed-size buffer).
 constexpr size_t kMaxValence = 32;
-
-// Local coordinates (4.27) and heights (4.24) of the one-ring, as
-// vertex_fit.cpp's local_coordinates computes them.
-template <class Real>
-int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const int32_t* end, const Vector3d& b1,
-                     const Vector3d& b2, const Vector3d& n, double* pu, double* pv, double* pd) {
-  const Real* q = points + 3 * size_t(v);
-  const double ox = q[0], oy = q[1], oz = q[2];
-  int count = 0;
-  for (; ring != end; ++ring) {
-    const Real* p = points + 3 * size_t(*ring);
-    const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
-    const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
-    // Written always, kept unless it coincides with the vertex (no branch).
-    pu[count] = u;
-    pv[count] = vv;
-    pd[count] = x * n(0) + y * n(1) + z * n(2);
-    count += !(u == 0.0 && vv == 0.0);
-  }
-  return count;
-}
 
 // fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, padded
 // with zeros to a multiple of 4, with fit_height's arithmetic in its order:

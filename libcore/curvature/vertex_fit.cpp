@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "ring_coordinates.h"
+
 namespace isoform {
 namespace {
 
@@ -96,21 +98,8 @@ int local_coordinates(const Real* points, int32_t v, const std::vector<int32_t>&
     s.v.resize(near.size() + 1);
     s.d.resize(near.size() + 1);
   }
-  const Real* q = points + 3 * size_t(v);
-  const double ox = q[0], oy = q[1], oz = q[2];
-  double *pu = s.u.data(), *pv = s.v.data(), *pd = s.d.data();
-  int count = 0;
-  for (int32_t w : near) {
-    const Real* p = points + 3 * size_t(w);
-    const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
-    const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
-    // Written always, kept unless it coincides with the vertex (no branch).
-    pu[count] = u;
-    pv[count] = vv;
-    pd[count] = x * n(0) + y * n(1) + z * n(2);
-    count += !(u == 0.0 && vv == 0.0);
-  }
-  return count;
+  return ring_coordinates(points, v, near.data(), near.data() + near.size(), b1, b2, n, s.u.data(), s.v.data(),
+                          s.d.data());
 }
 
 int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
