@@ -18,10 +18,15 @@
 namespace isoform {
 namespace {
 
-// Four points at a time, one in each lane; the lanes are added at the end.
-// Without AVX the compiler splits each operation into two SSE2 ones, lane by
-// lane, so both builds of accumulate() give the same bits (no fused
-// multiply-add in either: AVX alone has none).
+// The sums run over a point set's points in their order (j = 0, 1, ...),
+// one sum per moment: the order both the one-set fit and the side-by-side
+// fit keep, so each lane of the latter gives the former's bits. The
+// side-by-side fit holds one point set per lane of a vector (no sums across
+// lanes at the end, and the moments go to the factorisation as they are);
+// its shorter sets are padded with the origin, which adds 0 to every sum (no
+// moment or term has degree 0). Without AVX the compiler splits each vector
+// operation into two SSE2 ones, lane by lane, so both builds give the same
+// bits (no fused multiply-add in either: AVX alone has none).
 typedef double Quad __attribute__((vector_size(32)));
 
 // A model's monomials u^i v^j: degrees lo to hi, within a degree by
@@ -56,63 +61,56 @@ struct GramIndex {
   }
 };
 
-// moment[k] = sum of u^a v^b, rhs[k] = sum of d u^i v^j over the scaled
-// points, fully unrolled over the model's terms.
-template <int Lo, int Hi>
-inline __attribute__((always_inline)) void accumulate_body(const double* u, const double* v, const double* d,
-                                                           int count, double inv,
-                                                           double (&moment)[Model<Lo, Hi>::kMoments],
-                                                           double (&rhs)[Model<Lo, Hi>::kTerms]) {
-  constexpr int kTop = Model<Lo, Hi>::kTop, kMoments = Model<Lo, Hi>::kMoments, kTerms = Model<Lo, Hi>::kTerms;
-  Quad m[kMoments] = {}, r[kTerms] = {};
-  for (int j = 0; j < count; j += 4) {
-    // A count that is not a multiple of 4 pads the last lanes with the
-    // origin, which adds 0 to every sum (no moment or term has degree 0).
-    Quad x, y, h;
-    for (int l = 0; l < 4; ++l) {
-      const bool in = j + l < count;
-      x[l] = in ? u[j + l] * inv : 0.0;
-      y[l] = in ? v[j + l] * inv : 0.0;
-      h[l] = in ? d[j + l] : 0.0;
-    }
-    Quad pu[kTop + 1], pv[kTop + 1];
-    pu[0] = pv[0] = Quad{1.0, 1.0, 1.0, 1.0};
-    pu[1] = x;
-    pv[1] = y;
+// Adds one point (x, y scaled, height h) to moment[k] (the sums of u^a v^b)
+// and rhs[k] (the sums of d u^i v^j), fully unrolled over the model's terms;
+// T is double for one point set, Quad for four side by side.
+template <int Lo, int Hi, class T>
+inline __attribute__((always_inline)) void add_point(T x, T y, T h, T (&moment)[Model<Lo, Hi>::kMoments],
+                                                     T (&rhs)[Model<Lo, Hi>::kTerms]) {
+  constexpr int kTop = Model<Lo, Hi>::kTop;
+  T pu[kTop + 1], pv[kTop + 1];
+  pu[0] = pv[0] = T{} + 1.0;
+  pu[1] = x;
+  pv[1] = y;
 #pragma GCC unroll 16
-    for (int a = 2; a <= kTop; ++a) {
-      pu[a] = pu[a - 1] * x;
-      pv[a] = pv[a - 1] * y;
-    }
-    int k = 0;
-#pragma GCC unroll 16
-    for (int s = 2 * Lo; s <= kTop; ++s)
-#pragma GCC unroll 16
-      for (int b = 0; b <= s; ++b, ++k) m[k] += pu[s - b] * pv[b];
-    k = 0;
-#pragma GCC unroll 16
-    for (int s = Lo; s <= Hi; ++s)
-#pragma GCC unroll 16
-      for (int b = 0; b <= s; ++b, ++k) r[k] += h * (pu[s - b] * pv[b]);
+  for (int a = 2; a <= kTop; ++a) {
+    pu[a] = pu[a - 1] * x;
+    pv[a] = pv[a - 1] * y;
   }
-  for (int k = 0; k < kMoments; ++k) moment[k] = (m[k][0] + m[k][1]) + (m[k][2] + m[k][3]);
-  for (int k = 0; k < kTerms; ++k) rhs[k] = (r[k][0] + r[k][1]) + (r[k][2] + r[k][3]);
+  int k = 0;
+#pragma GCC unroll 16
+  for (int s = 2 * Lo; s <= kTop; ++s)
+#pragma GCC unroll 16
+    for (int b = 0; b <= s; ++b, ++k) moment[k] += pu[s - b] * pv[b];
+  k = 0;
+#pragma GCC unroll 16
+  for (int s = Lo; s <= Hi; ++s)
+#pragma GCC unroll 16
+    for (int b = 0; b <= s; ++b, ++k) rhs[k] += h * (pu[s - b] * pv[b]);
 }
 
-// The scale and the moments of one point set; false (no fit) with fewer
+// The scale of one point set (its largest |(u, v)|, so that the
+// conditioning check does not depend on the mesh's size); false with fewer
 // points than terms or no usable scale.
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) bool scale_of(const double* u, const double* v, int count, double& scale) {
+  if (count < Model<Lo, Hi>::kTerms) return false;
+  double r2 = 0.0;
+  for (int j = 0; j < count; ++j) r2 = std::max(r2, u[j] * u[j] + v[j] * v[j]);
+  scale = std::sqrt(r2);
+  return scale > 0.0 && std::isfinite(scale);
+}
+
+// The scale and the sums of one point set; false where scale_of is.
 template <int Lo, int Hi>
 inline __attribute__((always_inline)) bool prepare(const double* u, const double* v, const double* d, int count,
                                                    double& scale, double (&moment)[Model<Lo, Hi>::kMoments],
                                                    double (&rhs)[Model<Lo, Hi>::kTerms]) {
-  if (count < Model<Lo, Hi>::kTerms) return false;
-  // Coordinates scaled by the largest |(u, v)|, so the conditioning check
-  // does not depend on the mesh's size.
-  double r2 = 0.0;
-  for (int j = 0; j < count; ++j) r2 = std::max(r2, u[j] * u[j] + v[j] * v[j]);
-  scale = std::sqrt(r2);
-  if (!(scale > 0.0) || !std::isfinite(scale)) return false;
-  accumulate_body<Lo, Hi>(u, v, d, count, 1.0 / scale, moment, rhs);
+  if (!scale_of<Lo, Hi>(u, v, count, scale)) return false;
+  const double inv = 1.0 / scale;
+  for (double& m : moment) m = 0.0;
+  for (double& r : rhs) r = 0.0;
+  for (int j = 0; j < count; ++j) add_point<Lo, Hi>(u[j] * inv, v[j] * inv, d[j], moment, rhs);
   return true;
 }
 
@@ -176,29 +174,39 @@ inline __attribute__((always_inline)) void fit_lanes_body(const double* const (&
                                                           int lanes, double min_rcond, HeightFit (&out)[4]) {
   using M = Model<Lo, Hi>;
   constexpr int kTerms = M::kTerms;
-  double scale[4], moment[4][M::kMoments], rhs[4][kTerms];
+  double scale[4];
   bool live[4] = {false, false, false, false};
-  int any = -1;
+  int any = -1, most = 0, in[4] = {0, 0, 0, 0};
+  Quad inv = {0.0, 0.0, 0.0, 0.0};
   for (int l = 0; l < 4; ++l) {
     out[l] = HeightFit{};
-    live[l] = l < lanes && prepare<Lo, Hi>(u[l], v[l], d[l], count[l], scale[l], moment[l], rhs[l]);
-    if (live[l]) any = l;
+    live[l] = l < lanes && scale_of<Lo, Hi>(u[l], v[l], count[l], scale[l]);
+    if (!live[l]) continue;
+    any = l;
+    inv[l] = 1.0 / scale[l];
+    in[l] = count[l];
+    most = std::max(most, count[l]);
   }
   if (any < 0) return;
-  // Lanes without a fit repeat a live lane's matrix (and are not read).
-  const double* values[4];
-  const double* b[4];
-  for (int l = 0; l < 4; ++l) {
-    values[l] = moment[live[l] ? l : any];
-    b[l] = rhs[live[l] ? l : any];
+  // The four point sets side by side, point j of each in its lane.
+  Quad m[M::kMoments] = {}, r[kTerms] = {};
+  for (int j = 0; j < most; ++j) {
+    Quad x, y, h;
+    for (int l = 0; l < 4; ++l) {
+      const bool here = j < in[l];
+      x[l] = here ? u[l][j] : 0.0;
+      y[l] = here ? v[l][j] : 0.0;
+      h[l] = here ? d[l][j] : 0.0;
+    }
+    add_point<Lo, Hi>(x * inv, y * inv, h, m, r);
   }
   static const GramIndex<Lo, Hi> index;
   SmallLdltLanes<kTerms> ldlt;
   bool factored[4];
-  ldlt.factor(values, index.at, factored);
+  ldlt.factor(m, index.at, factored);
   double c[4][kTerms];
   double* x[4] = {c[0], c[1], c[2], c[3]};
-  ldlt.solve(b, x);
+  ldlt.solve(r, x);
   for (int l = 0; l < lanes; ++l) {
     if (!live[l]) continue;
     if (!factored[l]) {
@@ -214,10 +222,14 @@ HeightFit fit_plain(const double* u, const double* v, const double* d, int count
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
 
-// The same code built for AVX where the build's baseline lacks it, chosen at
-// run time: four lanes in one instruction instead of two, the same bits.
+// The same code built for AVX, and for AVX-512 (whose 32 vector registers
+// hold the quartic's 56 sums with fewer spills), where the build's baseline
+// lacks them, chosen at run time: the same operations on 4 lanes, so the
+// same bits (no fused multiply-add: this file is built with
+// -ffp-contract=off, see CMakeLists.txt).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__AVX__)
 #define ISOFORM_AVX_CLONE 1
+#define ISOFORM_AVX512_TARGET __attribute__((target("avx512f,avx512vl")))
 template <int Lo, int Hi>
 __attribute__((target("avx"))) HeightFit fit_avx(const double* u, const double* v, const double* d, int count,
                                                  double min_rcond) {
@@ -228,6 +240,25 @@ __attribute__((target("avx"))) void fit_lanes_avx(const double* const (&u)[4], c
                                                   const double* const (&d)[4], const int (&count)[4], int lanes,
                                                   double min_rcond, HeightFit (&out)[4]) {
   fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+}
+template <int Lo, int Hi>
+ISOFORM_AVX512_TARGET HeightFit fit_avx512(const double* u, const double* v, const double* d, int count,
+                                           double min_rcond) {
+  return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
+}
+template <int Lo, int Hi>
+ISOFORM_AVX512_TARGET void fit_lanes_avx512(const double* const (&u)[4], const double* const (&v)[4],
+                                            const double* const (&d)[4], const int (&count)[4], int lanes,
+                                            double min_rcond, HeightFit (&out)[4]) {
+  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+}
+
+// 2: AVX-512 (F and VL), 1: AVX, 0: neither.
+int vector_level() {
+  static const int level = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") ? 2
+                           : __builtin_cpu_supports("avx")                                         ? 1
+                                                                                                   : 0;
+  return level;
 }
 #endif
 
@@ -241,8 +272,11 @@ template <int Lo, int Hi>
 void fit_lanes(const double* const (&u)[4], const double* const (&v)[4], const double* const (&d)[4],
                const int (&count)[4], int lanes, double min_rcond, HeightFit (&out)[4]) {
 #ifdef ISOFORM_AVX_CLONE
-  static const bool avx = __builtin_cpu_supports("avx");
-  if (avx) return fit_lanes_avx<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+  switch (vector_level()) {
+    case 2: return fit_lanes_avx512<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+    case 1: return fit_lanes_avx<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+    default: break;
+  }
 #endif
   fit_lanes_plain<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
 }
@@ -250,8 +284,11 @@ void fit_lanes(const double* const (&u)[4], const double* const (&v)[4], const d
 template <int Lo, int Hi>
 HeightFit fit(const double* u, const double* v, const double* d, int count, double min_rcond) {
 #ifdef ISOFORM_AVX_CLONE
-  static const bool avx = __builtin_cpu_supports("avx");
-  if (avx) return fit_avx<Lo, Hi>(u, v, d, count, min_rcond);
+  switch (vector_level()) {
+    case 2: return fit_avx512<Lo, Hi>(u, v, d, count, min_rcond);
+    case 1: return fit_avx<Lo, Hi>(u, v, d, count, min_rcond);
+    default: break;
+  }
 #endif
   return fit_plain<Lo, Hi>(u, v, d, count, min_rcond);
 }

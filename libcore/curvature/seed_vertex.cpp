@@ -18,38 +18,31 @@ using Eigen::Vector3d;
 // Rings longer than this go the general way (no fixed-size buffer).
 constexpr size_t kMaxValence = 32;
 
-// fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, padded
-// with zeros to a multiple of 4, with fit_height's arithmetic in its order:
-// the scale, the five moments u^4 .. v^4 and three sums d u^2, d u v,
-// d v^2 as four partial sums (point j into sum j mod 4, the padding adding
-// zeros) added pairwise, the pivoted 3 x 3 LDLT, the conditioning test.
+// fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, with
+// fit_height's arithmetic in its order: the scale, the five moments u^4 ..
+// v^4 and three sums d u^2, d u v, d v^2, the pivoted 3 x 3 LDLT, the
+// conditioning test.
 bool seed_fit(const double* u, const double* v, const double* d, int count, HeightFit& out) {
   double r2 = 0.0;
   for (int j = 0; j < count; ++j) r2 = std::max(r2, u[j] * u[j] + v[j] * v[j]);
   const double scale = std::sqrt(r2);
   if (!(scale > 0.0) || !std::isfinite(scale)) return false;
   const double inv = 1.0 / scale;
-  // Lane l of each vector sums the points j = l mod 4 (the padding adds
-  // zeros), as fit_height's four-point loop does.
-  typedef double Quad __attribute__((vector_size(32)));
-  Quad m0 = {}, m1 = {}, m2 = {}, m3 = {}, m4 = {}, r0 = {}, r1 = {}, r2s = {};
-  for (int j = 0; j < count; j += 4) {
-    const Quad x = Quad{u[j], u[j + 1], u[j + 2], u[j + 3]} * inv;
-    const Quad y = Quad{v[j], v[j + 1], v[j + 2], v[j + 3]} * inv;
-    const Quad h = {d[j], d[j + 1], d[j + 2], d[j + 3]};
-    const Quad x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
-    m0 += x3 * x;
-    m1 += x3 * y;
-    m2 += x2 * y2;
-    m3 += x * y3;
-    m4 += y3 * y;
-    r0 += h * x2;
-    r1 += h * (x * y);
-    r2s += h * y2;
+  // One sum per moment, over the points in their order, as fit_height
+  // sums them.
+  double moment[5] = {0, 0, 0, 0, 0}, rhs[3] = {0, 0, 0};
+  for (int j = 0; j < count; ++j) {
+    const double x = u[j] * inv, y = v[j] * inv, h = d[j];
+    const double x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
+    moment[0] += x3 * x;
+    moment[1] += x3 * y;
+    moment[2] += x2 * y2;
+    moment[3] += x * y3;
+    moment[4] += y3 * y;
+    rhs[0] += h * x2;
+    rhs[1] += h * (x * y);
+    rhs[2] += h * y2;
   }
-  auto total = [](const Quad& q) { return (q[0] + q[1]) + (q[2] + q[3]); };
-  const double moment[5] = {total(m0), total(m1), total(m2), total(m3), total(m4)};
-  const double rhs[3] = {total(r0), total(r1), total(r2s)};
   // Terms u^2, u v, v^2: entry (r, c) is the moment of v-power r + c.
   static constexpr int at[3][3] = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
   SmallLdlt<3> ldlt;
@@ -99,7 +92,6 @@ VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int3
                         ? ring_coordinates(mesh.precise_points.data(), v, first, last, b1, b2, n, u, w, d)
                         : ring_coordinates(mesh.points.data(), v, first, last, b1, b2, n, u, w, d);
   if (count < fit_terms(FitModel::SeedQuadratic)) return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
-  for (int j = count; j % 4; ++j) u[j] = w[j] = d[j] = 0.0;
   HeightFit fit;  // fu = fv = 0: principal_curvatures_inline folds them away
   if (!seed_fit(u, w, d, count, fit)) return fit_vertex(mesh, rings, v, CurvatureMethod::Seed, 0, s);
   if (rings.nonmanifold(v)) r.flags |= kCurvatureNonmanifold;

@@ -14,10 +14,60 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 
 namespace isoform {
+
+// Eigen's pivot order for a diagonal of magnitudes diag: step k of its
+// LDLT swaps k with the first largest entry among k..N-1, so row order[k]
+// of the input becomes row k.
+//
+// NOTE: with distinct entries that is the entries by decreasing size, so
+// each entry's place is the number of entries larger than it: counted here
+// for all entries at once in vectors, with no chain of dependent swaps.
+// Where two places coincide (equal entries, or a NaN, which nothing is
+// larger than) the steps are taken one by one as Eigen takes them.
+template <int N>
+inline __attribute__((always_inline)) void pivot_order(const double (&diag)[N], int (&order)[N]) {
+  typedef double Quad __attribute__((vector_size(32)));
+  typedef long long Count __attribute__((vector_size(32)));
+  constexpr int kBlocks = (N + 3) / 4;
+  double padded[4 * kBlocks];
+  for (int i = 0; i < 4 * kBlocks; ++i) padded[i] = i < N ? diag[i] : -1.0;  // -1: larger than no entry
+  Quad all[kBlocks];
+  std::memcpy(all, padded, sizeof(all));
+  // A comparison is -1 where true: place = -(sum of "j larger than i").
+  Count place[kBlocks] = {};
+  for (int j = 0; j < N; ++j) {
+    const double dj = diag[j];
+    for (int b = 0; b < kBlocks; ++b) place[b] += (Quad{dj, dj, dj, dj} > all[b]);
+  }
+  unsigned taken = 0;
+  for (int i = 0; i < N; ++i) {
+    const int at = int(-place[i / 4][i % 4]);
+    taken |= 1u << at;
+    order[at] = i;
+  }
+  if (taken == (1u << N) - 1) return;
+  double rest[N];
+  for (int i = 0; i < N; ++i) {
+    rest[i] = diag[i];
+    order[i] = i;
+  }
+  for (int k = 0; k < N - 1; ++k) {
+    int p = k;
+    double best = rest[k];
+    for (int i = k + 1; i < N; ++i) {
+      const bool larger = rest[i] > best;
+      best = larger ? rest[i] : best;
+      p = larger ? i : p;
+    }
+    std::swap(rest[k], rest[p]);
+    std::swap(order[k], order[p]);
+  }
+}
 
 template <int N>
 class SmallLdlt {
@@ -26,24 +76,9 @@ class SmallLdlt {
   // (at symmetric). False at the first pivot that is zero or not finite (D
   // is then incomplete).
   bool factor(const double* values, const int (&at)[N][N]) {
-    // Eigen's transpositions, applied to the diagonal: step k swaps k with
-    // the first largest |diagonal| among k..N-1.
     double diag[N];
-    for (int i = 0; i < N; ++i) {
-      diag[i] = std::abs(values[at[i][i]]);
-      order_[i] = i;
-    }
-    for (int k = 0; k < N - 1; ++k) {
-      int p = k;
-      double best = diag[k];
-      for (int i = k + 1; i < N; ++i) {
-        const bool larger = diag[i] > best;
-        best = larger ? diag[i] : best;
-        p = larger ? i : p;
-      }
-      std::swap(diag[k], diag[p]);
-      std::swap(order_[k], order_[p]);
-    }
+    for (int i = 0; i < N; ++i) diag[i] = std::abs(values[at[i][i]]);
+    pivot_order<N>(diag, order_);
     // m = P A P^T, lower triangle.
     for (int i = 0; i < N; ++i) {
       const int* row = at[order_[i]];
