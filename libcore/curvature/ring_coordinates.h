@@ -22,15 +22,19 @@ int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const i
                      double* pv, double* pd) {
   const Real* q = points + 3 * size_t(v);
   const double ox = q[0], oy = q[1], oz = q[2];
+  // The frame in locals: the stores below could alias it, and would make
+  // the compiler read it again for every point.
+  const double e0 = b1(0), e1 = b1(1), e2 = b1(2), f0 = b2(0), f1 = b2(1), f2 = b2(2);
+  const double n0 = n(0), n1 = n(1), n2 = n(2);
   int count = 0;
   for (; ring != end; ++ring) {
     const Real* p = points + 3 * size_t(*ring);
     const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
-    const double u = x * b1(0) + y * b1(1) + z * b1(2), vv = x * b2(0) + y * b2(1) + z * b2(2);
+    const double u = x * e0 + y * e1 + z * e2, vv = x * f0 + y * f1 + z * f2;
     // Written always, kept unless it coincides with the vertex (no branch).
     pu[count] = u;
     pv[count] = vv;
-    pd[count] = x * n(0) + y * n(1) + z * n(2);
+    pd[count] = x * n0 + y * n1 + z * n2;
     count += !(u == 0.0 && vv == 0.0);
   }
   return count;
