@@ -12,7 +12,14 @@
 namespace isoform::reduce {
 namespace {
 
-bool lighter(const QueueEntry& a, const QueueEntry& b) { return std::tie(a.weight, a.face) < std::tie(b.weight, b.face); }
+// A function object rather than a function, so that the sorts and the
+// merge inline the comparison.
+struct Lighter {
+  bool operator()(const QueueEntry& a, const QueueEntry& b) const {
+    return std::tie(a.weight, a.face) < std::tie(b.weight, b.face);
+  }
+};
+constexpr Lighter lighter{};
 
 bool current(const WorkMesh& w, const QueueEntry& e) {
   return w.face_alive[size_t(e.face)] && w.face_stamp[size_t(e.face)] == e.stamp;
