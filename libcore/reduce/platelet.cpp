@@ -166,8 +166,7 @@ PlateletStatus gather_platelet(const WorkMesh& w, int face, Platelet& p) {
   // face, read and written in the queue's order all over memory).
   for (int k = 0; k < 3; ++k) {
     p.open_vertex[k] = w.boundary[size_t(p.a[size_t(k)])] != 0;
-    const std::vector<int>& around = w.vfaces[size_t(p.a[size_t(k)])];
-    p.faces.insert(p.faces.end(), around.begin(), around.end());
+    for (int f : w.vfaces[size_t(p.a[size_t(k)])]) p.faces.push_back(f);
   }
   std::sort(p.faces.begin(), p.faces.end());
   p.faces.erase(std::unique(p.faces.begin(), p.faces.end()), p.faces.end());
