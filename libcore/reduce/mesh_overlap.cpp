@@ -1,6 +1,6 @@
 // The broad phase of the self-overlap check (see mesh_overlap.h). Cells are
-// grouped by a hash into buckets (a counting sort), buckets are sorted and
-// tested in parallel.
+// grouped into buckets of 4 x 4 x 4 (a counting sort), each bucket ordered
+// by cell and tested in parallel.
 #include "mesh_overlap.h"
 
 #include <algorithm>
