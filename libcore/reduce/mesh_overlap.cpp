@@ -1,6 +1,6 @@
 // The broad phase of the self-overlap check (see mesh_overlap.h). Cells are
-// grouped by a hash into buckets (a counting sort), buckets are sorted and
-// tested in parallel.
+// grouped into buckets of 4 x 4 x 4 (a counting sort), each bucket ordered
+// by cell and tested in parallel.
 #include "mesh_overlap.h"
 
 #include <algorithm>
@@ -27,6 +27,7 @@ struct Entry {
   // Bit k: this cell is the first of the triangle's box along axis k. A
   // pair's common box starts in the cell where, on every axis, one of the two
   // starts, so (a.first | b.first) == 7 tests the pair in that cell only.
+  // The higher bits are free (find_overlaps keeps a slot there).
   uint32_t first;
   bool operator<(const Entry& o) const { return key != o.key ? key < o.key : triangle < o.triangle; }
 };
@@ -131,31 +132,89 @@ void for_cells(const CellRange& r, Visit visit) {
         visit(Grid::key(x, y, z), uint32_t(x == r.lo[0]) | uint32_t(y == r.lo[1]) << 1 | uint32_t(z == r.lo[2]) << 2);
 }
 
-uint64_t bucket_of(uint64_t key, int bits) { return (key * 0x9E3779B97F4A7C15ull) >> (64 - bits); }
+// NOTE: buckets hold whole blocks of 4 x 4 x 4 cells, not single cells, and
+// are numbered in the blocks' order along x, then y, then z when the blocks
+// are few enough (else by a hash of the block): a bucket's triangles are
+// then neighbours, gathered once for all the block's cells, the next bucket
+// reads mostly the same part of memory, and consecutive triangles of the
+// input mostly fill the same bucket. With one hashed cell per bucket every
+// bucket started cold (its boxes and corners were all over memory).
+constexpr int kBlockBits = 2;
 
-// (cell, triangle) entries grouped by a hash of the cell (a counting sort,
-// O(n)); each bucket is sorted later, so equal cells end up adjacent.
+struct BucketMap {
+  bool dense = false;
+  int bits = 1;
+  uint64_t nx = 1, ny = 1;  // blocks along x and y (dense)
+  size_t count = 2;
+  size_t operator()(uint64_t key) const {
+    const uint64_t x = (key & uint64_t(kCellMax)) >> kBlockBits;
+    const uint64_t y = ((key >> kCellBits) & uint64_t(kCellMax)) >> kBlockBits;
+    const uint64_t z = (key >> (2 * kCellBits)) >> kBlockBits;
+    if (dense) return size_t(x + nx * (y + ny * z));
+    return size_t((Grid::key(int64_t(x), int64_t(y), int64_t(z)) * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+  }
+};
+
+BucketMap bucket_map(const std::vector<CellRange>& ranges, size_t entries) {
+  int32_t top[3] = {0, 0, 0};
+  for (const CellRange& r : ranges)
+    for (int k = 0; k < 3; ++k) top[k] = std::max(top[k], r.hi[k]);
+  BucketMap m;
+  const uint64_t n[3] = {uint64_t(top[0] >> kBlockBits) + 1, uint64_t(top[1] >> kBlockBits) + 1,
+                         uint64_t(top[2] >> kBlockBits) + 1};
+  const double blocks = double(n[0]) * double(n[1]) * double(n[2]);
+  if (blocks <= 4.0 * double(entries) + 4096.0) {
+    m.dense = true;
+    m.nx = n[0];
+    m.ny = n[1];
+    m.count = size_t(blocks);
+    return m;
+  }
+  while (m.bits < 40 && (size_t(1) << m.bits) < entries / 64) ++m.bits;  // about 64 entries a bucket
+  m.count = size_t(1) << m.bits;
+  return m;
+}
+
+// (cell, triangle) entries grouped by block (a counting sort, O(n)); each
+// bucket is sorted later, so equal cells end up adjacent.
 struct Buckets {
   std::vector<size_t> start;  // per bucket, into entries
   std::vector<Entry> entries;
+  bool dense = false;         // each bucket one block (BucketMap::dense)
 };
+
+// The cell of key within its block, 0 to 63, in the order of the keys.
+uint32_t cell_in_block(uint64_t key) {
+  constexpr uint64_t mask = (uint64_t(1) << kBlockBits) - 1;
+  return uint32_t((key & mask) | ((key >> kCellBits) & mask) << kBlockBits |
+                  ((key >> (2 * kCellBits)) & mask) << (2 * kBlockBits));
+}
+
+// Orders the entries of one block by cell, stably (a counting sort).
+void group_by_cell(Entry* first, Entry* last, std::vector<Entry>& scratch) {
+  constexpr int kCells = 1 << (3 * kBlockBits);
+  uint32_t start[kCells + 1] = {};
+  for (const Entry* i = first; i != last; ++i) ++start[cell_in_block(i->key) + 1];
+  for (int c = 0; c < kCells; ++c) start[c + 1] += start[c];
+  scratch.resize(size_t(last - first));
+  for (const Entry* i = first; i != last; ++i) scratch[start[cell_in_block(i->key)]++] = *i;
+  std::copy(scratch.begin(), scratch.end(), first);
+}
 
 Buckets grid_entries(const std::vector<Box>& boxes, const Grid& g) {
   const std::vector<CellRange> ranges = cell_ranges(boxes, g);
   size_t n = 0;
   for (const CellRange& r : ranges) n += r.count();
-  int bits = 1;  // about 8 entries a bucket
-  while (bits < 40 && (size_t(1) << bits) < n / 8) ++bits;
+  const BucketMap bucket = bucket_map(ranges, n);
   Buckets out;
-  out.start.assign((size_t(1) << bits) + 1, 0);
-  for (const CellRange& r : ranges) for_cells(r, [&](uint64_t key, uint32_t) { ++out.start[bucket_of(key, bits) + 1]; });
+  out.dense = bucket.dense;
+  out.start.assign(bucket.count + 1, 0);
+  for (const CellRange& r : ranges) for_cells(r, [&](uint64_t key, uint32_t) { ++out.start[bucket(key) + 1]; });
   for (size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
   std::vector<size_t> fill(out.start.begin(), out.start.end() - 1);
   out.entries.resize(n);
   for (size_t t = 0; t < ranges.size(); ++t)
-    for_cells(ranges[t], [&](uint64_t key, uint32_t first) {
-      out.entries[fill[bucket_of(key, bits)]++] = {key, int32_t(t), first};
-    });
+    for_cells(ranges[t], [&](uint64_t key, uint32_t first) { out.entries[fill[bucket(key)]++] = {key, int32_t(t), first}; });
   return out;
 }
 
@@ -165,6 +224,23 @@ bool boxes_meet(const Box& a, const Box& b) {
   return true;
 }
 
+
+// A bucket's triangles with what every pair test reads: corners, normal,
+// box and vertex indices, gathered once per bucket instead of once per pair.
+struct LocalTriangle {
+  Point3 p[3];
+  Point3 n;
+  Box box;
+  int32_t v[3];
+};
+
+struct BucketScratch {
+  std::vector<int32_t> ids;     // the bucket's triangles, ascending
+  std::vector<LocalTriangle> local;
+  std::vector<Entry> sorted;    // group_by_cell's
+  std::vector<OverlapPair> found;
+};
+
 }  // namespace
 
 std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
@@ -172,38 +248,61 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
   const std::vector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
   const Grid grid = make_grid(boxes);
   Buckets buckets = grid_entries(boxes, grid);
-  tbb::enumerable_thread_specific<std::vector<OverlapPair>> found;
-  auto test_cell = [&](const Entry* e, size_t count, std::vector<OverlapPair>& out) {
+  tbb::enumerable_thread_specific<BucketScratch> scratch;
+  // The pairs of one cell [e, e + count): each pair whose common box starts
+  // in this cell.
+  auto test_cell = [&](const Entry* e, size_t count, BucketScratch& b) {
     for (size_t p = 0; p < count; ++p)
       for (size_t q = p + 1; q < count; ++q) {
-        if ((e[p].first | e[q].first) != 7) continue;
-        const int32_t a = e[p].triangle, b = e[q].triangle;  // a < b: sorted
-        if (!boxes_meet(boxes[size_t(a)], boxes[size_t(b)])) continue;
-        Point3 pa[3], pb[3];
-        corners.of(size_t(a), pa);
-        corners.of(size_t(b), pb);
-        const PairOverlap o = triangles_overlap(pa, &mesh.triangles[3 * size_t(a)], pb, &mesh.triangles[3 * size_t(b)]);
-        if (o.overlap) out.push_back({a, b, o.near});
+        if (((e[p].first | e[q].first) & 7) != 7) continue;
+        const LocalTriangle& ta = b.local[size_t(e[p].first >> 3)];
+        const LocalTriangle& tb = b.local[size_t(e[q].first >> 3)];
+        if (!boxes_meet(ta.box, tb.box)) continue;
+        const PairOverlap o = triangles_overlap(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v);
+        if (o.overlap) b.found.push_back({e[p].triangle, e[q].triangle, o.near});  // a < b: sorted
       }
   };
   const size_t bucket_count = buckets.start.size() - 1;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, bucket_count, 1024), [&](const tbb::blocked_range<size_t>& r) {
-    std::vector<OverlapPair>& out = found.local();
+    BucketScratch& b = scratch.local();
     for (size_t k = r.begin(); k != r.end(); ++k) {
       Entry* first = buckets.entries.data() + buckets.start[k];
       Entry* last = buckets.entries.data() + buckets.start[k + 1];
       if (last - first < 2) continue;
-      std::sort(first, last);
+      // The entries were filled in triangle order, each triangle's together:
+      // its slot among the bucket's triangles goes into the high bits of
+      // Entry::first.
+      b.ids.clear();
+      for (Entry* i = first; i != last; ++i) {
+        if (b.ids.empty() || b.ids.back() != i->triangle) b.ids.push_back(i->triangle);
+        i->first |= uint32_t(b.ids.size() - 1) << 3;
+      }
+      b.local.resize(b.ids.size());
+      for (size_t i = 0; i < b.ids.size(); ++i) {
+        LocalTriangle& t = b.local[i];
+        const size_t id = size_t(b.ids[i]);
+        corners.of(id, t.p);
+        t.n = triangle_normal(t.p);
+        t.box = boxes[id];
+        for (int c = 0; c < 3; ++c) t.v[c] = mesh.triangles[3 * id + size_t(c)];
+      }
+      // Equal cells together, each in triangle order: in a dense map a
+      // bucket is one block, ordered by the cell within it (a stable
+      // counting sort); else sorted by (cell, triangle).
+      if (buckets.dense)
+        group_by_cell(first, last, b.sorted);
+      else
+        std::sort(first, last);
       for (Entry* i = first; i != last;) {
         Entry* end = i;
         while (end != last && end->key == i->key) ++end;
-        if (end - i > 1) test_cell(i, size_t(end - i), out);
+        if (end - i > 1) test_cell(i, size_t(end - i), b);
         i = end;
       }
     }
   });
   std::vector<OverlapPair> all;
-  for (auto& part : found) all.insert(all.end(), part.begin(), part.end());
+  for (auto& part : scratch) all.insert(all.end(), part.found.begin(), part.found.end());
   std::sort(all.begin(), all.end(),
             [](const OverlapPair& x, const OverlapPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
   return all;

@@ -152,8 +152,7 @@ void choose_open_origin(const WorkMesh& w, const Platelet& p, const Link& link, 
 
 }  // namespace
 
-PlateletStatus gather_platelet(const WorkMesh& w, int face, std::vector<uint32_t>& mark, uint32_t* token,
-                               Platelet& p) {
+PlateletStatus gather_platelet(const WorkMesh& w, int face, Platelet& p) {
   p.face = face;
   p.a = w.tri[size_t(face)];
   p.faces.clear();
@@ -162,16 +161,15 @@ PlateletStatus gather_platelet(const WorkMesh& w, int face, std::vector<uint32_t
   p.neighbours = 0;
   p.origin_kind = 0;
   p.origin_vertex = -1;
-  const uint32_t t = ++*token;
+  // NOTE: the faces around T's vertices, each once: sorted and made unique
+  // here rather than marked in a per-face array (one more cache line per
+  // face, read and written in the queue's order all over memory).
   for (int k = 0; k < 3; ++k) {
     p.open_vertex[k] = w.boundary[size_t(p.a[size_t(k)])] != 0;
-    for (int f : w.vfaces[size_t(p.a[size_t(k)])])
-      if (mark[size_t(f)] != t) {
-        mark[size_t(f)] = t;
-        p.faces.push_back(f);
-      }
+    for (int f : w.vfaces[size_t(p.a[size_t(k)])]) p.faces.push_back(f);
   }
   std::sort(p.faces.begin(), p.faces.end());
+  p.faces.erase(std::unique(p.faces.begin(), p.faces.end()), p.faces.end());
   p.closed = !p.open_vertex[0] && !p.open_vertex[1] && !p.open_vertex[2];
   static thread_local Link link;
   link.from.clear();

@@ -12,6 +12,7 @@
 // triangles orders the polygon counter-clockwise (Definition 5.8) directly.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -41,9 +42,10 @@ struct Platelet {
   int link_edges() const { return int(ring_face.size()); }
 };
 
-// Gathers T's platelet into p (reusing its storage). `mark` must hold one
-// entry per face, each below *token; the call advances *token.
-PlateletStatus gather_platelet(const WorkMesh& w, int face, std::vector<uint32_t>& mark, uint32_t* token,
-                               Platelet& p);
+// Gathers T's platelet into p (reusing its storage).
+PlateletStatus gather_platelet(const WorkMesh& w, int face, Platelet& p);
+
+// Is face f one of the platelet's (T or its corona)?
+inline bool in_platelet(const Platelet& p, int f) { return std::binary_search(p.faces.begin(), p.faces.end(), f); }
 
 }  // namespace isoform::reduce

@@ -12,11 +12,14 @@
 namespace isoform::reduce {
 namespace {
 
-bool lighter(const QueueEntry& a, const QueueEntry& b) { return std::tie(a.weight, a.face) < std::tie(b.weight, b.face); }
-
-bool current(const WorkMesh& w, const QueueEntry& e) {
-  return w.face_alive[size_t(e.face)] && w.face_stamp[size_t(e.face)] == e.stamp;
-}
+// A function object rather than a function, so that the sorts and the
+// merge inline the comparison.
+struct Lighter {
+  bool operator()(const QueueEntry& a, const QueueEntry& b) const {
+    return std::tie(a.weight, a.face) < std::tie(b.weight, b.face);
+  }
+};
+constexpr Lighter lighter{};
 
 }  // namespace
 
@@ -40,14 +43,29 @@ const std::vector<QueueEntry>& PassQueue::next_pass(const WorkMesh& w, int pass)
     tbb::parallel_sort(order_.begin(), order_.end(), lighter);
     return order_;
   }
-  // The faces of the last pass's removals that are still there, sorted.
+  // The faces of the last pass's removals that are still there, sorted; and
+  // one bit per face: alive and not made in the last pass.
   fresh_.clear();
-  for (size_t f = 0; f < w.tri.size(); ++f)
-    if (w.face_alive[f] && w.face_pass[f] == pass - 1) fresh_.push_back({w.weight[f], int(f), w.face_stamp[f]});
+  old_.assign((w.tri.size() + 63) / 64, 0);
+  for (size_t f = 0; f < w.tri.size(); ++f) {
+    if (!w.face_alive[f]) continue;
+    if (w.face_pass[f] == pass - 1)
+      fresh_.push_back({w.weight[f], int(f), w.face_stamp[f]});
+    else
+      old_[f / 64] |= uint64_t(1) << (f % 64);
+  }
   tbb::parallel_sort(fresh_.begin(), fresh_.end(), lighter);
   // The older faces keep their order; the changed and removed ones drop out.
+  // NOTE: every entry here was current when the last pass began, and a face
+  // that changes during a pass either goes or is made anew in that pass
+  // (Remover::commit), so an entry is still current exactly when its face
+  // is alive and was not made in the last pass: the bits above, read in a
+  // small array, instead of each entry's face and stamp all over memory.
   order_.erase(std::remove_if(order_.begin(), order_.end(),
-                              [&](const QueueEntry& e) { return !current(w, e) || w.face_pass[size_t(e.face)] == pass - 1; }),
+                              [&](const QueueEntry& e) {
+                                const size_t f = size_t(e.face);
+                                return !(old_[f / 64] >> (f % 64) & 1);
+                              }),
                order_.end());
   merged_.resize(order_.size() + fresh_.size());
   std::merge(order_.begin(), order_.end(), fresh_.begin(), fresh_.end(), merged_.begin(), lighter);

@@ -33,6 +33,7 @@ class PassQueue {
 
  private:
   std::vector<QueueEntry> order_, fresh_, merged_;
+  std::vector<uint64_t> old_;  // next_pass's bits
 };
 
 // Sets w.weight of face f from its vertices (5.21-5.23).

@@ -45,8 +45,7 @@ double tracked_rms(const ReduceOptions& o) {
 
 Remover::Remover(WorkMesh& w, const ReduceOptions& options)
     : w_(w), options_(options),
-      tracker_(w, tracked_distance(options), tracked_rms(options), options.measure_error),
-      mark_(w.tri.size(), 0) {}
+      tracker_(w, tracked_distance(options), tracked_rms(options), options.measure_error) {}
 
 // Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
 // open corona it is not the centroid): p's projection onto P lies strictly
@@ -140,7 +139,7 @@ Outcome Remover::try_remove(int f, int pass) {
   const auto& t = w_.tri[size_t(f)];
   const bool touches_boundary = w_.boundary[size_t(t[0])] || w_.boundary[size_t(t[1])] || w_.boundary[size_t(t[2])];
   if (options_.lock_boundary && touches_boundary) return Outcome::Boundary;
-  const PlateletStatus status = gather_platelet(w_, f, mark_, &token_, platelet_);
+  const PlateletStatus status = gather_platelet(w_, f, platelet_);
   if (status == PlateletStatus::Corona) return Outcome::Corona;
   if (status == PlateletStatus::Nonmanifold) return Outcome::Nonmanifold;
   // NOTE: what the fit, the tests and the commit read next, asked for
@@ -162,7 +161,7 @@ Outcome Remover::try_remove(int f, int pass) {
   if (placed != Outcome::Removed) return placed;
   int swaps = 0;
   if (options_.swaps) {
-    swaps = lawson_swaps(w_, platelet_, frame, point, mark_, token_, faces_);
+    swaps = lawson_swaps(w_, platelet_, frame, point, faces_);
     if (swaps > 0 && !faces_ok(frame, point)) return Outcome::Flip;
   }
   if (options_.refine_point && tracker_.active()) {

@@ -35,8 +35,6 @@ class Remover {
   WorkMesh& w_;
   ReduceOptions options_;
   Tracker tracker_;
-  std::vector<uint32_t> mark_;
-  uint32_t token_ = 0;
   Platelet platelet_;
   LocalFaces faces_;
   std::vector<int> ids_;

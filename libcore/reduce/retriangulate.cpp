@@ -29,13 +29,11 @@ bool has_edge(const std::array<int, 3>& t, int a, int b) {
 }
 
 // Is a-b an edge of the mesh outside the platelet, or of the local faces?
-bool edge_exists(const WorkMesh& w, const std::vector<uint32_t>& mark, uint32_t token, const LocalFaces& faces,
-                 int a, int b) {
+bool edge_exists(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, int a, int b) {
   for (const auto& t : faces.tri)
     if (has_edge(t, a, b)) return true;
   for (int f : w.vfaces[size_t(a)]) {
-    if (mark[size_t(f)] == token) continue;
-    if (w.face_with_vertex_index(f, b) >= 0) return true;
+    if (w.face_with_vertex_index(f, b) >= 0 && !in_platelet(p, f)) return true;
   }
   return false;
 }
@@ -48,7 +46,7 @@ enum class Swap { Done, Refused, NoEdgeLeft };
 // on the two faces (no shared edge, not convex, not better); NoEdgeLeft
 // (the new diagonal is an edge already) also on the others.
 Swap try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
-              const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces, size_t i, size_t j) {
+              LocalFaces& faces, size_t i, size_t j) {
   const auto& ti = faces.tri[i];
   const auto& tj = faces.tri[j];
   for (int k = 0; k < 3; ++k) {
@@ -64,7 +62,7 @@ Swap try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Ei
       const double after = std::min(angle_weight(P(o1), P(x), P(o2)), angle_weight(P(o2), P(y), P(o1)));
       // NOTE: a margin, so that rounding cannot swap a diagonal back and forth.
       if (!(after > before + 1e-12)) return Swap::Refused;
-      if (edge_exists(w, mark, token, faces, o1, o2)) return Swap::NoEdgeLeft;
+      if (edge_exists(w, p, faces, o1, o2)) return Swap::NoEdgeLeft;
       faces.tri[i] = {o1, x, o2};
       faces.tri[j] = {o2, y, o1};
       faces.source[i] = faces.source[j] = -1;
@@ -87,7 +85,7 @@ void build_fan(const Platelet& p, LocalFaces& out) {
 }
 
 int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
-                 const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces) {
+                 LocalFaces& faces) {
   int swaps = 0;
   // Each swap raises the sorted list of angle weights, so this ends; the cap
   // only guards against rounding.
@@ -109,7 +107,7 @@ int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const
       for (size_t j = i + 1; j < n && !changed; ++j) {
         std::array<int, 2>& seen = refused[i * n + j];
         if (seen[0] == made[i] && seen[1] == made[j]) continue;
-        const Swap s = try_swap(w, p, frame, point, mark, token, faces, i, j);
+        const Swap s = try_swap(w, p, frame, point, faces, i, j);
         if (s == Swap::Refused) seen = {made[i], made[j]};
         if (s != Swap::Done) continue;
         ++swaps;

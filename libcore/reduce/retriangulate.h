@@ -25,9 +25,9 @@ inline const Eigen::Vector3d& local_pos(const WorkMesh& w, const Platelet& p, co
 
 void build_fan(const Platelet& p, LocalFaces& out);
 
-// Swaps while they help; returns how many were made. Faces of the platelet
-// carry mark == token (they are replaced, so edges there do not count).
+// Swaps while they help; returns how many were made. Edges of the
+// platelet's faces do not count (they are replaced).
 int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
-                 const std::vector<uint32_t>& mark, uint32_t token, LocalFaces& faces);
+                 LocalFaces& faces);
 
 }  // namespace isoform::reduce

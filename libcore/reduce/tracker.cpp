@@ -38,7 +38,8 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
     : distance_(distance_tolerance), rms_(rms_tolerance), measure_(measure) {
   if (!active()) return;
   const size_t nv = w.pos.size(), nt = w.tri.size();
-  original_ = w.pos;
+  original_.resize(nv);
+  for (size_t v = 0; v < nv; ++v) original_[v].x = w.pos[v];
   original_tri_ = w.tri;
   face_start_.assign(nv + 1, 0);
   for (size_t v = 0; v < nv; ++v) face_start_[v + 1] = face_start_[v] + int(w.vfaces[v].size());
@@ -47,7 +48,6 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
     std::copy(w.vfaces[v].begin(), w.vfaces[v].end(), face_list_.begin() + face_start_[v]);
   head_.assign(nt, -1);
   next_.assign(nv, -1);
-  err2_.assign(nv, 0.0);
   touched_.assign(nv, 0);
   for (size_t v = 0; v < nv; ++v) {
     if (w.vfaces[v].empty()) continue;
@@ -102,7 +102,7 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
   size_t index = 0;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)], ++index) {
-      const Eigen::Vector3d& x = original_[size_t(v)];
+      const Eigen::Vector3d& x = original_[size_t(v)].x;
       // Graph mode hands x to the new face above it, else to the nearest;
       // after refine() the face it chose is kept (in graph mode p's (x, y)
       // did not move, so it is the same face; else the distance to it is
@@ -145,7 +145,7 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
           }
       }
       if (rms_ > 0) {
-        pending_sum_ += best_err2 - err2_[size_t(v)];
+        pending_sum_ += best_err2 - original_[size_t(v)].err2;
         pending_err2_.push_back(best_err2);
         local_max2 = std::max(local_max2, best_err2);
         fresh += touched_[size_t(v)] ? 0 : 1;
@@ -160,8 +160,8 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
     if (v < 0) continue;
     for (int k = face_start_[size_t(v)]; k < face_start_[size_t(v) + 1]; ++k) {
       const auto& t = original_tri_[size_t(face_list_[size_t(k)])];
-      near_original = std::min(near_original, point_triangle_distance(point, original_[size_t(t[0])],
-                                                                      original_[size_t(t[1])], original_[size_t(t[2])]));
+      near_original = std::min(near_original, point_triangle_distance(point, original_[size_t(t[0])].x,
+                                                                      original_[size_t(t[1])].x, original_[size_t(t[2])].x));
     }
   }
   if (distance_ > 0 && near_original < std::numeric_limits<double>::infinity()) {
@@ -190,7 +190,7 @@ void Tracker::commit(const std::vector<int>& ids) {
     next_[size_t(v)] = head_[size_t(f)];
     head_[size_t(f)] = v;
     if (rms_ > 0) {
-      err2_[size_t(v)] = pending_err2_[i];
+      original_[size_t(v)].err2 = pending_err2_[i];
       touched_[size_t(v)] = 1;
     }
   }

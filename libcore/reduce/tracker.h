@@ -65,11 +65,17 @@ class Tracker {
  private:
   double distance_, rms_;
   bool measure_;
-  std::vector<Eigen::Vector3d> original_;
+  // NOTE: an original vertex's point and squared height error side by side,
+  // one record of 32 bytes: the lists are walked in the queue's order, and
+  // check() read the error from a second array, a cache miss of its own.
+  struct alignas(32) Original {
+    Eigen::Vector3d x;
+    double err2 = 0;  // squared height error (graph mode)
+  };
+  std::vector<Original> original_;
   std::vector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
   std::vector<std::array<int, 3>> original_tri_;
   std::vector<int> head_, next_;  // current face -> its original vertices (linked)
-  std::vector<double> err2_;      // per original vertex: squared height error (graph mode)
   double sum_err2_ = 0, max_distance_ = 0;
   std::vector<uint8_t> touched_;  // per original vertex: its error was ever computed (graph mode)
   long long touched_count_ = 0, pending_touched_ = 0;

@@ -52,7 +52,7 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
   assigned_valid_ = true;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
-      const Eigen::Vector3d& x = original_[size_t(v)];
+      const Eigen::Vector3d& x = original_[size_t(v)].x;
       // The new face x lies on (graph: above; under a distance tolerance: the
       // nearest; else: the one its projection onto P falls in) and x's
       // barycentric weight of p there.

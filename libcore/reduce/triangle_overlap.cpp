@@ -205,8 +205,15 @@ bool degenerate(const Point3& n) { return !(n[0] != 0 || n[1] != 0 || n[2] != 0)
 
 }  // namespace
 
+Point3 triangle_normal(const Point3 t[3]) { return normal(t); }
+
 PairOverlap triangles_overlap(const Point3 pa[3], const int32_t ia[3], const Point3 pb[3], const int32_t ib[3]) {
-  const Triangle a{pa, normal(pa)}, b{pb, normal(pb)};
+  return triangles_overlap(pa, normal(pa), ia, pb, normal(pb), ib);
+}
+
+PairOverlap triangles_overlap(const Point3 pa[3], const Point3& na, const int32_t ia[3], const Point3 pb[3],
+                              const Point3& nb, const int32_t ib[3]) {
+  const Triangle a{pa, na}, b{pb, nb};
   if (degenerate(a.n) || degenerate(b.n)) return {};
   const Bounds k(pa, pb);
   int in_b[3] = {-1, -1, -1};  // for each corner of a, the same vertex's corner in b

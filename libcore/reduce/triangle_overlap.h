@@ -34,5 +34,11 @@ struct PairOverlap {
 
 // a and b are the corners, ia and ib their mesh vertex indices.
 PairOverlap triangles_overlap(const Point3 a[3], const int32_t ia[3], const Point3 b[3], const int32_t ib[3]);
+// The same with the normals given: na = triangle_normal(a), nb = triangle_normal(b)
+// (for callers that test one triangle against many).
+PairOverlap triangles_overlap(const Point3 a[3], const Point3& na, const int32_t ia[3], const Point3 b[3],
+                              const Point3& nb, const int32_t ib[3]);
+// (t1 - t0) x (t2 - t0).
+Point3 triangle_normal(const Point3 t[3]);
 
 }  // namespace isoform::reduce
