@@ -14,6 +14,7 @@
 #include "../errors.h"
 #include "brick_topology.h"
 #include "packed_keys.h"
+#include "radix_sort.h"
 #include "seams.h"
 
 namespace isoform {
@@ -133,7 +134,12 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
       for (size_t m = 0; m < bm.shared_count; ++m)
         keys[at++] = layout.pack(bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second));
     });
-    tbb::parallel_sort(keys.get(), keys.get() + nk);
+    {
+      // The words are distinct (each holds its vertex), so any sort gives
+      // the same order.
+      const std::unique_ptr<uint64_t[]> buffer = uninitialised<uint64_t>(nk);
+      radix_sort(keys.get(), buffer.get(), nk, layout.bits, [](uint64_t k) { return k; });
+    }
     number_vertices(PackedKeys{keys.get(), layout.vertex_bits}, nk, bricks, o, vt);
     return vt;
   }
@@ -270,7 +276,7 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
     missing |= s.missing_normal;
   }
   std::vector<std::pair<int32_t, int32_t>> links;
-  match_seams(seams.get(), seam_count, mesh.triangles, mesh.neighbours, counts, links);
+  match_seams(seams.get(), seam_count, nv, mesh.triangles, mesh.neighbours, counts, links);
   seams.reset();
   mesh.part_count = number_parts(mesh.parts, size_t(part_first.back()), links);
   mesh.stats = MeshStats();

@@ -3,9 +3,11 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <memory>
+
+#include "radix_sort.h"
 
 namespace isoform {
 namespace {
@@ -40,10 +42,18 @@ void match_group(const SeamEdge* g, size_t n, const std::vector<int32_t>& triang
 
 }  // namespace
 
-void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
+void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, const std::vector<int32_t>& triangles,
                  std::vector<int32_t>& neighbours, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links) {
-  tbb::parallel_sort(seams, seams + n);
+  {
+    // Both vertices of a key are below vertex_count: sort by the two packed
+    // side by side. Stable, so equal keys keep their increasing edges, which
+    // is the order of (key, edge).
+    const int vb = radix_bits_for(vertex_count > 0 ? uint64_t(vertex_count - 1) : 0);
+    const std::unique_ptr<SeamEdge[]> buffer(new SeamEdge[n]);
+    radix_sort(seams, buffer.get(), n, 2 * vb,
+               [vb](const SeamEdge& e) { return ((e.key >> 32) << vb) | (e.key & 0xFFFFFFFFu); });
+  }
   tbb::enumerable_thread_specific<GroupScratch> scratch;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
     GroupScratch& s = scratch.local();

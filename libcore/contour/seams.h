@@ -12,12 +12,14 @@
 
 namespace isoform {
 
-// Sorts the seam edges and fills their neighbours as compute_neighbours
+// Sorts the seam edges by key, then edge (seams must come with their edges
+// increasing, as merge.cpp writes them, and with the vertices of their keys
+// below vertex_count), and fills their neighbours as compute_neighbours
 // would: an edge held by exactly two triangles makes them neighbours (and
 // appends the pair to links), one held by one is a boundary edge, one held
 // by three or more gets no neighbours and counts as non-manifold.
 // Runs in parallel with TBB in the calling task arena.
-void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
+void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, const std::vector<int32_t>& triangles,
                  std::vector<int32_t>& neighbours, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links);
 
