@@ -4,7 +4,6 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 #include <cmath>
@@ -13,6 +12,7 @@
 
 #include "../errors.h"
 #include "brick_topology.h"
+#include "fresh_memory.h"
 #include "packed_keys.h"
 #include "radix_sort.h"
 #include "seams.h"
@@ -20,10 +20,11 @@
 namespace isoform {
 namespace {
 
-// Arrays that are written in full before they are read: no zeroing.
+// Arrays that are written in full before they are read: no zeroing, pages
+// made present up front (fresh_memory.h).
 template <class T>
 std::unique_ptr<T[]> uninitialised(size_t n) {
-  return std::unique_ptr<T[]>(new T[n]);
+  return fresh_array<T>(n);
 }
 
 template <class F>
@@ -246,11 +247,13 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   tbb::enumerable_thread_specific<Scratch> scratch;
   // Vertices and triangles first; the vertex data is then dropped before
   // the neighbour and part tables are made, which lowers the peak.
-  tbb::parallel_invoke([&] { mesh.points.resize(3 * nv); }, [&] { mesh.normals.resize(3 * nv); },
-                       [&] { mesh.triangles.resize(3 * nt); });
+  fresh_resize(mesh.points, 3 * nv);
+  fresh_resize(mesh.normals, 3 * nv);
+  fresh_resize(mesh.triangles, 3 * nt);
   for_each_brick(nb, [&](size_t b) { place_brick(bricks[b], b, o, vt, orientation, mesh, scratch.local()); });
   for (BrickStores& s : tables.stores) s.vertices.clear();
-  tbb::parallel_invoke([&] { mesh.neighbours.resize(3 * nt); }, [&] { mesh.parts.resize(nt); });
+  fresh_resize(mesh.neighbours, 3 * nt);
+  fresh_resize(mesh.parts, nt);
   std::vector<int32_t> part_counts(nb, 0);
   // Each brick writes its seam edges at its own offset: in brick order, and
   // in edge order inside a brick.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "fresh_memory.h"
 #include "radix_sort.h"
 
 namespace isoform {
@@ -50,7 +51,7 @@ void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, const std::vect
     // side by side. Stable, so equal keys keep their increasing edges, which
     // is the order of (key, edge).
     const int vb = radix_bits_for(vertex_count > 0 ? uint64_t(vertex_count - 1) : 0);
-    const std::unique_ptr<SeamEdge[]> buffer(new SeamEdge[n]);
+    const std::unique_ptr<SeamEdge[]> buffer = fresh_array<SeamEdge>(n);
     radix_sort(seams, buffer.get(), n, 2 * vb,
                [vb](const SeamEdge& e) { return ((e.key >> 32) << vb) | (e.key & 0xFFFFFFFFu); });
   }
