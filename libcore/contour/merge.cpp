@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 #include "../errors.h"
 #include "brick_topology.h"
@@ -269,8 +270,13 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   // Local parts made global: brick b's come after those of bricks before it.
   std::vector<int32_t> part_first(nb + 1, 0);
   for (size_t b = 0; b < nb; ++b) part_first[b + 1] = part_first[b] + part_counts[b];
+  // Each brick's local parts are its own, so the bricks count them apart.
+  std::vector<int64_t> part_size(size_t(part_first.back()), 0);
   for_each_brick(nb, [&](size_t b) {
-    for (size_t t = o.triangle[b]; t < o.triangle[b + 1]; ++t) mesh.parts[t] += part_first[b];
+    for (size_t t = o.triangle[b]; t < o.triangle[b + 1]; ++t) {
+      mesh.parts[t] += part_first[b];
+      ++part_size[size_t(mesh.parts[t])];
+    }
   });
   TopologyCounts counts;
   bool missing = false;
@@ -279,9 +285,9 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
     missing |= s.missing_normal;
   }
   std::vector<std::pair<int32_t, int32_t>> links;
-  match_seams(seams.get(), seam_count, nv, mesh.triangles, mesh.neighbours, counts, links);
+  match_seams(seams.get(), seam_count, nv, mesh.neighbours, mesh.parts, counts, links);
   seams.reset();
-  mesh.part_count = number_parts(mesh.parts, size_t(part_first.back()), links);
+  mesh.part_count = number_parts(mesh.parts, std::move(part_size), links);
   mesh.stats = MeshStats();
   mesh.stats.boundary_edges = counts.boundary;
   mesh.stats.nonmanifold_edges = counts.nonmanifold;
