@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -103,6 +104,19 @@ void number_vertices(const View& keys, size_t nk, const std::vector<BrickMesh>& 
   });
 }
 
+// True when a[0, n) is in increasing order (checked in parallel).
+bool sorted(const uint64_t* a, size_t n) {
+  std::atomic<bool> ok{true};
+  tbb::parallel_for(tbb::blocked_range<size_t>(1, n > 0 ? n : 1, 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i)
+      if (a[i - 1] > a[i]) {
+        ok = false;
+        return;
+      }
+  });
+  return ok;
+}
+
 struct PairKeys {
   const std::pair<uint64_t, uint64_t>* k;
   bool same(size_t i, size_t j) const { return k[i].first == k[j].first; }
@@ -137,11 +151,15 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
         keys[at++] = layout.pack(bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second));
     });
     {
-      // The words are distinct (each holds its vertex), so any sort gives
-      // the same order.
+      // The words are distinct (each holds its vertex). They are written
+      // with their vertices increasing (bricks in order, each brick's shared
+      // vertices in the order it made them), so a stable sort by the bits
+      // above the vertex leaves them in the order of the whole words; should
+      // they not come out so, a comparison sort puts them there.
       const std::unique_ptr<uint64_t[]> buffer = uninitialised<uint64_t>(nk);
-      radix_sort(keys.get(), buffer.get(), nk, layout.bits, [](uint64_t k) { return k; });
+      radix_sort(keys.get(), buffer.get(), nk, layout.bits, [](uint64_t k) { return k; }, layout.vertex_bits);
     }
+    if (!sorted(keys.get(), nk)) tbb::parallel_sort(keys.get(), keys.get() + nk);
     number_vertices(PackedKeys{keys.get(), layout.vertex_bits}, nk, bricks, o, vt);
     return vt;
   }

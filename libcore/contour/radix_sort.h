@@ -16,12 +16,13 @@
 
 namespace isoform {
 
-// Sorts data[0, n) by key(record), a uint64_t below 2^bits, using buffer
-// (room for n records, contents ignored) as scratch. The result is in data.
-// Passes whose digit is the same in every record are skipped. Runs in
-// parallel with TBB in the calling task arena.
+// Sorts data[0, n) stably by the bits low_bit .. bits - 1 of key(record), a
+// uint64_t below 2^bits, using buffer (room for n records, contents
+// ignored) as scratch. The result is in data. Passes whose digit is the
+// same in every record are skipped. Runs in parallel with TBB in the calling
+// task arena.
 template <class T, class Key>
-void radix_sort(T* data, T* buffer, size_t n, int bits, const Key& key) {
+void radix_sort(T* data, T* buffer, size_t n, int bits, const Key& key, int low_bit = 0) {
   constexpr int kDigitBits = 8;
   constexpr size_t kBuckets = size_t(1) << kDigitBits;
   if (n < 2) return;
@@ -30,7 +31,7 @@ void radix_sort(T* data, T* buffer, size_t n, int bits, const Key& key) {
   std::vector<size_t> count(chunks * kBuckets);
   T* from = data;
   T* to = buffer;
-  for (int shift = 0; shift < bits; shift += kDigitBits) {
+  for (int shift = low_bit; shift < bits; shift += kDigitBits) {
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
       size_t* h = &count[c * kBuckets];
       std::fill(h, h + kBuckets, size_t(0));

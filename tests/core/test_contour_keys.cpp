@@ -40,6 +40,20 @@ TEST(RadixSort, SortsLikeAComparisonSortAndKeepsTheOrderOfEqualKeys) {
     }
 }
 
+TEST(RadixSort, SortingAboveLowBitsThatIncreaseGivesTheWholeOrder) {
+  // What the merge relies on for the packed keys: the words come with their
+  // low bits (the vertex) increasing, so sorting stably by the bits above
+  // them orders the whole words.
+  std::mt19937_64 rng(12);
+  const size_t n = 200000;
+  std::vector<uint64_t> words(n), buffer(n);
+  for (size_t i = 0; i < n; ++i) words[i] = ((rng() & 0xFFFFF) << 18) | i;
+  std::vector<uint64_t> expected = words;
+  std::sort(expected.begin(), expected.end());
+  radix_sort(words.data(), buffer.data(), n, 38, [](uint64_t w) { return w; }, 18);
+  EXPECT_EQ(words, expected);
+}
+
 TEST(PackedKeys, PackingKeepsTheOrderOfKeyVertexPairs) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> coord(-300, 700), slot(0, 6), vertex(0, 99999);
