@@ -5,10 +5,13 @@
 // small per-brick vectors would not.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <memory>
 #include <vector>
+
+#include "fresh_memory.h"
 
 namespace isoform {
 
@@ -24,25 +27,34 @@ class BlockStore {
   }
   void clear() {
     blocks_.clear();
-    used_ = capacity_ = 0;
+    used_ = capacity_ = populated_ = 0;
   }
 
  private:
   static constexpr size_t kBlock = size_t(64) << 20;  // above any mmap threshold
+  static constexpr size_t kAhead = size_t(2) << 20;   // pages made present at a time
   void* allocate(size_t bytes) {
     bytes = (bytes + 15) & ~size_t(15);
     if (used_ + bytes > capacity_) {
       capacity_ = bytes > kBlock ? bytes : kBlock;
       blocks_.emplace_back(new char[capacity_]);
-      used_ = 0;
+      used_ = populated_ = 0;
     }
-    void* at = blocks_.back().get() + used_;
+    char* block = blocks_.back().get();
+    if (used_ + bytes > populated_) {
+      // The pages about to be written, and the next few, in one call
+      // (fresh_memory.h), on this thread.
+      const size_t upto = std::min(capacity_, used_ + bytes + kAhead);
+      populate_pages(block + populated_, upto - populated_, false);
+      populated_ = upto;
+    }
+    void* at = block + used_;
     used_ += bytes;
     return at;
   }
 
   std::vector<std::unique_ptr<char[]>> blocks_;
-  size_t used_ = 0, capacity_ = 0;
+  size_t used_ = 0, capacity_ = 0, populated_ = 0;
 };
 
 // One thread's stores: vertex data (points, gradients) is dropped before

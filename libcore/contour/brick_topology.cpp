@@ -41,7 +41,8 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
       if (shared[a] && shared[b]) {
         const uint64_t fa = uint64_t(final_vertex[a]), fb = uint64_t(final_vertex[b]);
         if (seams == seams_end) throw std::logic_error("contour: more seam edges than the brick counted");
-        *seams++ = {fa < fb ? (fa << 32) | fb : (fb << 32) | fa, uint64_t(3 * first_triangle) + at};
+        *seams++ = {fa < fb ? (fa << 32) | fb : (fb << 32) | fa,
+                    (uint64_t(3 * first_triangle) + at) << 1 | uint64_t(fa < fb)};
         continue;
       }
       const uint64_t key = a < b ? (uint64_t(a) << 32) | uint64_t(b) : (uint64_t(b) << 32) | uint64_t(a);

@@ -19,7 +19,11 @@ namespace isoform {
 // One triangle edge whose two vertices are both on brick boundaries.
 struct SeamEdge {
   uint64_t key;   // (smaller final vertex << 32) | larger final vertex
-  uint64_t edge;  // 3 * global triangle + i: the edge (v_i, v_i+1)
+  // (3 * global triangle + i) << 1 | up: the edge (v_i, v_i+1), up when
+  // v_i is the smaller vertex (what the inconsistency count needs).
+  uint64_t edge;
+  uint64_t triangle_edge() const { return edge >> 1; }
+  bool runs_up() const { return edge & 1; }
 };
 
 inline bool operator<(const SeamEdge& a, const SeamEdge& b) {

@@ -4,25 +4,29 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 #include "../errors.h"
 #include "brick_topology.h"
+#include "fresh_memory.h"
 #include "packed_keys.h"
+#include "radix_sort.h"
 #include "seams.h"
 
 namespace isoform {
 namespace {
 
-// Arrays that are written in full before they are read: no zeroing.
+// Arrays that are written in full before they are read: no zeroing, pages
+// made present up front (fresh_memory.h).
 template <class T>
 std::unique_ptr<T[]> uninitialised(size_t n) {
-  return std::unique_ptr<T[]>(new T[n]);
+  return fresh_array<T>(n);
 }
 
 template <class F>
@@ -100,6 +104,19 @@ void number_vertices(const View& keys, size_t nk, const std::vector<BrickMesh>& 
   });
 }
 
+// True when a[0, n) is in increasing order (checked in parallel).
+bool sorted(const uint64_t* a, size_t n) {
+  std::atomic<bool> ok{true};
+  tbb::parallel_for(tbb::blocked_range<size_t>(1, n > 0 ? n : 1, 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i)
+      if (a[i - 1] > a[i]) {
+        ok = false;
+        return;
+      }
+  });
+  return ok;
+}
+
 struct PairKeys {
   const std::pair<uint64_t, uint64_t>* k;
   bool same(size_t i, size_t j) const { return k[i].first == k[j].first; }
@@ -133,7 +150,16 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
       for (size_t m = 0; m < bm.shared_count; ++m)
         keys[at++] = layout.pack(bm.shared[m].first, uint64_t(o.vertex[b]) + uint64_t(bm.shared[m].second));
     });
-    tbb::parallel_sort(keys.get(), keys.get() + nk);
+    {
+      // The words are distinct (each holds its vertex). They are written
+      // with their vertices increasing (bricks in order, each brick's shared
+      // vertices in the order it made them), so a stable sort by the bits
+      // above the vertex leaves them in the order of the whole words; should
+      // they not come out so, a comparison sort puts them there.
+      const std::unique_ptr<uint64_t[]> buffer = uninitialised<uint64_t>(nk);
+      radix_sort(keys.get(), buffer.get(), nk, layout.bits, [](uint64_t k) { return k; }, layout.vertex_bits);
+    }
+    if (!sorted(keys.get(), nk)) tbb::parallel_sort(keys.get(), keys.get() + nk);
     number_vertices(PackedKeys{keys.get(), layout.vertex_bits}, nk, bricks, o, vt);
     return vt;
   }
@@ -240,11 +266,13 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   tbb::enumerable_thread_specific<Scratch> scratch;
   // Vertices and triangles first; the vertex data is then dropped before
   // the neighbour and part tables are made, which lowers the peak.
-  tbb::parallel_invoke([&] { mesh.points.resize(3 * nv); }, [&] { mesh.normals.resize(3 * nv); },
-                       [&] { mesh.triangles.resize(3 * nt); });
+  fresh_resize(mesh.points, 3 * nv);
+  fresh_resize(mesh.normals, 3 * nv);
+  fresh_resize(mesh.triangles, 3 * nt);
   for_each_brick(nb, [&](size_t b) { place_brick(bricks[b], b, o, vt, orientation, mesh, scratch.local()); });
   for (BrickStores& s : tables.stores) s.vertices.clear();
-  tbb::parallel_invoke([&] { mesh.neighbours.resize(3 * nt); }, [&] { mesh.parts.resize(nt); });
+  fresh_resize(mesh.neighbours, 3 * nt);
+  fresh_resize(mesh.parts, nt);
   std::vector<int32_t> part_counts(nb, 0);
   // Each brick writes its seam edges at its own offset: in brick order, and
   // in edge order inside a brick.
@@ -260,8 +288,13 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   // Local parts made global: brick b's come after those of bricks before it.
   std::vector<int32_t> part_first(nb + 1, 0);
   for (size_t b = 0; b < nb; ++b) part_first[b + 1] = part_first[b] + part_counts[b];
+  // Each brick's local parts are its own, so the bricks count them apart.
+  std::vector<int64_t> part_size(size_t(part_first.back()), 0);
   for_each_brick(nb, [&](size_t b) {
-    for (size_t t = o.triangle[b]; t < o.triangle[b + 1]; ++t) mesh.parts[t] += part_first[b];
+    for (size_t t = o.triangle[b]; t < o.triangle[b + 1]; ++t) {
+      mesh.parts[t] += part_first[b];
+      ++part_size[size_t(mesh.parts[t])];
+    }
   });
   TopologyCounts counts;
   bool missing = false;
@@ -270,9 +303,9 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
     missing |= s.missing_normal;
   }
   std::vector<std::pair<int32_t, int32_t>> links;
-  match_seams(seams.get(), seam_count, mesh.triangles, mesh.neighbours, counts, links);
+  match_seams(seams.get(), seam_count, nv, mesh.neighbours, mesh.parts, counts, links);
   seams.reset();
-  mesh.part_count = number_parts(mesh.parts, size_t(part_first.back()), links);
+  mesh.part_count = number_parts(mesh.parts, std::move(part_size), links);
   mesh.stats = MeshStats();
   mesh.stats.boundary_edges = counts.boundary;
   mesh.stats.nonmanifold_edges = counts.nonmanifold;

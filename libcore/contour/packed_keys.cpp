@@ -50,6 +50,7 @@ PackedLayout packed_layout(const std::vector<BrickMesh>& bricks, size_t vertex_c
     layout.shift[a] = bits > 0 ? at : 0;  // a constant coordinate packs as 0
     at += bits;
   }
+  layout.bits = at;
   layout.fits = at <= 64;
   return layout;
 }

@@ -18,6 +18,7 @@ struct PackedLayout {
   uint64_t low[3] = {0, 0, 0};       // smallest coordinate per axis (as in the key)
   int shift[3] = {0, 0, 0};          // where each coordinate goes
   int vertex_bits = 0;               // the provisional vertex's bits (lowest)
+  int bits = 0;                      // every packed word is below 2^bits
   uint64_t pack(uint64_t key, uint64_t vertex) const {
     const uint64_t x = key >> 43, y = (key >> 23) & 0xFFFFF, z = (key >> 3) & 0xFFFFF;
     return ((x - low[0]) << shift[0]) | ((y - low[1]) << shift[1]) | ((z - low[2]) << shift[2]) |

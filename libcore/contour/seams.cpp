@@ -3,9 +3,12 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <memory>
+
+#include "fresh_memory.h"
+#include "radix_sort.h"
 
 namespace isoform {
 namespace {
@@ -15,24 +18,20 @@ struct GroupScratch {
   std::vector<std::pair<int32_t, int32_t>> links;
 };
 
-// True when triangle edge e runs from its smaller to its larger vertex.
-bool runs_up(const std::vector<int32_t>& triangles, uint64_t e) {
-  const size_t t = size_t(e / 3), i = size_t(e % 3);
-  return triangles[3 * t + i] < triangles[3 * t + (i + 1) % 3];
-}
-
-void match_group(const SeamEdge* g, size_t n, const std::vector<int32_t>& triangles,
-                 std::vector<int32_t>& neighbours, GroupScratch& s) {
+void match_group(const SeamEdge* g, size_t n, std::vector<int32_t>& neighbours, const std::vector<int32_t>& parts,
+                 GroupScratch& s) {
   ++s.counts.edges;
-  for (size_t m = 0; m < n; ++m) neighbours[size_t(g[m].edge)] = -1;
+  for (size_t m = 0; m < n; ++m) neighbours[size_t(g[m].triangle_edge())] = -1;
   if (n == 1) {
     ++s.counts.boundary;
   } else if (n == 2) {
-    const int32_t t = int32_t(g[0].edge / 3), u = int32_t(g[1].edge / 3);
-    neighbours[size_t(g[0].edge)] = u;
-    neighbours[size_t(g[1].edge)] = t;
-    if (runs_up(triangles, g[0].edge) == runs_up(triangles, g[1].edge)) ++s.counts.inconsistent;
-    s.links.emplace_back(t, u);
+    const int32_t t = int32_t(g[0].triangle_edge() / 3), u = int32_t(g[1].triangle_edge() / 3);
+    neighbours[size_t(g[0].triangle_edge())] = u;
+    neighbours[size_t(g[1].triangle_edge())] = t;
+    if (g[0].runs_up() == g[1].runs_up()) ++s.counts.inconsistent;
+    // The local parts to join; neighbouring groups often join the same two.
+    const std::pair<int32_t, int32_t> link(parts[size_t(t)], parts[size_t(u)]);
+    if (link.first != link.second && (s.links.empty() || s.links.back() != link)) s.links.push_back(link);
   } else {
     ++s.counts.nonmanifold;
   }
@@ -40,10 +39,18 @@ void match_group(const SeamEdge* g, size_t n, const std::vector<int32_t>& triang
 
 }  // namespace
 
-void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
-                 std::vector<int32_t>& neighbours, TopologyCounts& counts,
+void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, std::vector<int32_t>& neighbours,
+                 const std::vector<int32_t>& parts, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links) {
-  tbb::parallel_sort(seams, seams + n);
+  {
+    // Both vertices of a key are below vertex_count: sort by the two packed
+    // side by side. Stable, so equal keys keep their increasing edges, which
+    // is the order of (key, edge).
+    const int vb = radix_bits_for(vertex_count > 0 ? uint64_t(vertex_count - 1) : 0);
+    const std::unique_ptr<SeamEdge[]> buffer = fresh_array<SeamEdge>(n);
+    radix_sort(seams, buffer.get(), n, 2 * vb,
+               [vb](const SeamEdge& e) { return ((e.key >> 32) << vb) | (e.key & 0xFFFFFFFFu); });
+  }
   tbb::enumerable_thread_specific<GroupScratch> scratch;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
     GroupScratch& s = scratch.local();
@@ -53,7 +60,7 @@ void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangle
     while (i < r.end()) {
       size_t j = i + 1;
       while (j < n && seams[j].key == seams[i].key) ++j;
-      match_group(&seams[i], j - i, triangles, neighbours, s);
+      match_group(&seams[i], j - i, neighbours, parts, s);
       i = j;
     }
   });
@@ -63,8 +70,9 @@ void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangle
   }
 }
 
-int32_t number_parts(std::vector<int32_t>& parts, size_t local_parts,
+int32_t number_parts(std::vector<int32_t>& parts, std::vector<int64_t> size,
                      const std::vector<std::pair<int32_t, int32_t>>& links) {
+  const size_t local_parts = size.size();
   std::vector<int32_t> root(local_parts);
   for (size_t g = 0; g < local_parts; ++g) root[g] = int32_t(g);
   auto find = [&](int32_t x) {
@@ -74,11 +82,9 @@ int32_t number_parts(std::vector<int32_t>& parts, size_t local_parts,
   // The smallest local part is the one with the smallest first triangle,
   // so roots by smallest index are the roots compute_parts finds.
   for (const auto& l : links) {
-    const int32_t a = find(parts[size_t(l.first)]), b = find(parts[size_t(l.second)]);
+    const int32_t a = find(l.first), b = find(l.second);
     if (a != b) root[size_t(std::max(a, b))] = std::min(a, b);
   }
-  std::vector<int64_t> size(local_parts, 0);
-  for (int32_t g : parts) ++size[size_t(g)];
   std::vector<int32_t> roots;
   for (size_t g = 0; g < local_parts; ++g) {
     const int32_t r = find(int32_t(g));

@@ -12,21 +12,26 @@
 
 namespace isoform {
 
-// Sorts the seam edges and fills their neighbours as compute_neighbours
+// Sorts the seam edges by key, then edge (seams must come with their edges
+// increasing, as merge.cpp writes them, and with the vertices of their keys
+// below vertex_count), and fills their neighbours as compute_neighbours
 // would: an edge held by exactly two triangles makes them neighbours (and
-// appends the pair to links), one held by one is a boundary edge, one held
-// by three or more gets no neighbours and counts as non-manifold.
-// Runs in parallel with TBB in the calling task arena.
-void match_seams(SeamEdge* seams, size_t n, const std::vector<int32_t>& triangles,
-                 std::vector<int32_t>& neighbours, TopologyCounts& counts,
+// appends the pair of their parts to links, unless the parts are one or
+// the pair was the last one appended), one held by one is a boundary edge,
+// one held by three or more gets no neighbours and counts as non-manifold.
+// parts: each triangle's local part (number_parts). Runs in parallel with
+// TBB in the calling task arena.
+void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, std::vector<int32_t>& neighbours,
+                 const std::vector<int32_t>& parts, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links);
 
 // parts holds each triangle's brick-local part, made global (0 ..
-// local_parts - 1, increasing with the part's first triangle). Joins the
-// local parts that links connect and rewrites parts with the final labels,
-// numbered by size, largest first, ties by first triangle, as compute_parts
-// does. Returns the number of parts.
-int32_t number_parts(std::vector<int32_t>& parts, size_t local_parts,
+// local_parts - 1, increasing with the part's first triangle), size the
+// triangles of each local part (local_parts of them). Joins the local
+// parts that links (pairs of local parts) connect and rewrites parts with
+// the final labels, numbered by size, largest first, ties by first
+// triangle, as compute_parts does. Returns the number of parts.
+int32_t number_parts(std::vector<int32_t>& parts, std::vector<int64_t> size,
                      const std::vector<std::pair<int32_t, int32_t>>& links);
 
 }  // namespace isoform

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "libcore/contour/packed_keys.h"
+#include "libcore/contour/radix_sort.h"
 #include "mesh_checks.h"
 
 namespace isoform {
@@ -18,6 +19,39 @@ std::vector<BrickMesh> bricks_with(const std::vector<std::pair<uint64_t, int32_t
   bm.shared = shared.data();
   bm.shared_count = uint32_t(shared.size());
   return {bm};
+}
+
+TEST(RadixSort, SortsLikeAComparisonSortAndKeepsTheOrderOfEqualKeys) {
+  std::mt19937_64 rng(11);
+  // Sizes around the chunking (2^15 records per chunk, at most 64 chunks),
+  // keys of a few bits (many equal) up to 61 bits, some digits constant.
+  for (size_t n : {size_t(0), size_t(1), size_t(2), size_t(1000), size_t(40000), size_t(300000), size_t(2500000)})
+    for (int bits : {3, 20, 61}) {
+      std::vector<std::pair<uint64_t, uint64_t>> records(n), buffer(n);
+      for (size_t i = 0; i < n; ++i) {
+        uint64_t key = rng() & ((uint64_t(1) << bits) - 1);
+        if (bits == 61) key &= ~(uint64_t(0xFF) << 24);  // a digit that is 0 in every key
+        records[i] = {key, i};
+      }
+      std::vector<std::pair<uint64_t, uint64_t>> expected = records;
+      std::sort(expected.begin(), expected.end());
+      radix_sort(records.data(), buffer.data(), n, bits, [](const std::pair<uint64_t, uint64_t>& r) { return r.first; });
+      EXPECT_EQ(records, expected) << n << " records, " << bits << " bits";
+    }
+}
+
+TEST(RadixSort, SortingAboveLowBitsThatIncreaseGivesTheWholeOrder) {
+  // What the merge relies on for the packed keys: the words come with their
+  // low bits (the vertex) increasing, so sorting stably by the bits above
+  // them orders the whole words.
+  std::mt19937_64 rng(12);
+  const size_t n = 200000;
+  std::vector<uint64_t> words(n), buffer(n);
+  for (size_t i = 0; i < n; ++i) words[i] = ((rng() & 0xFFFFF) << 18) | i;
+  std::vector<uint64_t> expected = words;
+  std::sort(expected.begin(), expected.end());
+  radix_sort(words.data(), buffer.data(), n, 38, [](uint64_t w) { return w; }, 18);
+  EXPECT_EQ(words, expected);
 }
 
 TEST(PackedKeys, PackingKeepsTheOrderOfKeyVertexPairs) {

@@ -1,0 +1,43 @@
+// Populating fresh pages (fresh_memory.h).
+#include "fresh_memory.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cstdint>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace isoform {
+
+void populate_pages(void* p, size_t bytes, bool parallel) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr size_t kSmall = size_t(1) << 20;    // below this, faults are cheap enough
+  constexpr size_t kStretch = size_t(8) << 20;  // one call per stretch
+  if (!p || bytes < kSmall) return;
+  static const size_t page = size_t(sysconf(_SC_PAGESIZE));
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~uintptr_t(page - 1);
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) & ~uintptr_t(page - 1);
+  if (end <= begin) return;
+  const size_t stretches = (end - begin + kStretch - 1) / kStretch;
+  const auto one = [&](size_t s) {
+    const uintptr_t a = begin + s * kStretch;
+    const uintptr_t b = a + kStretch < end ? a + kStretch : end;
+    // A refusal (old kernel, no memory to populate now) leaves the pages
+    // to fault in when written.
+    (void)madvise(reinterpret_cast<void*>(a), b - a, MADV_POPULATE_WRITE);
+  };
+  if (parallel && stretches > 1)
+    tbb::parallel_for(size_t(0), stretches, one);
+  else
+    for (size_t s = 0; s < stretches; ++s) one(s);
+#else
+  (void)p;
+  (void)bytes;
+  (void)parallel;
+#endif
+}
+
+}  // namespace isoform

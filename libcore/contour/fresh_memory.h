@@ -1,0 +1,37 @@
+// Large arrays that the contour writes in full: their pages are made
+// present a stretch at a time (Linux madvise MADV_POPULATE_WRITE) before
+// they are written, instead of by one page fault per 4 KB page on first
+// write, which costs about a third more kernel time for the same zeroed
+// pages. Elsewhere, or when the kernel refuses, the pages fault in as usual:
+// the contents and the result never depend on it.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace isoform {
+
+// Makes the whole pages inside [p, p + bytes) present and writable. Small
+// ranges are left alone. Runs in parallel with TBB in the calling arena
+// when parallel is true.
+void populate_pages(void* p, size_t bytes, bool parallel = true);
+
+// n values, not initialised, their pages present.
+template <class T>
+std::unique_ptr<T[]> fresh_array(size_t n) {
+  std::unique_ptr<T[]> a(new T[n]);
+  populate_pages(a.get(), n * sizeof(T));
+  return a;
+}
+
+// v resized to n value-initialised elements (v empty before), its pages
+// made present before they are written.
+template <class T>
+void fresh_resize(std::vector<T>& v, size_t n) {
+  v.reserve(n);
+  populate_pages(v.data(), n * sizeof(T));
+  v.resize(n);
+}
+
+}  // namespace isoform
