@@ -20,7 +20,7 @@ constexpr size_t kMaxValence = 32;
 
 // fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, with
 // fit_height's arithmetic in its order: the scale, the five moments u^4 ..
-// v^4 and three sums d u^2, d u v, d v^2, the pivoted 3 x 3 LDLT, the
+// v^4 and three sums d u^2, d u v, d v^2, the 3 x 3 LDLT, the
 // conditioning test.
 bool seed_fit(const double* u, const double* v, const double* d, int count, HeightFit& out) {
   double r2 = 0.0;

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "libcore/curvature/height_fit.h"
-#include "libcore/curvature/small_ldlt.h"
 #include "libcore/curvature/vertex_fit.h"
 #include "libcore/mesh_normals.h"
 #include "truth.h"
@@ -54,58 +53,7 @@ void expect_same(const VertexFitResult& a, const VertexFitResult& b, size_t v) {
   EXPECT_EQ(std::memcmp(p.normal.data(), q.normal.data(), 3 * sizeof(double)), 0) << "vertex " << v;
 }
 
-// Eigen's LDLT pivoting as it steps: k swaps with the first largest
-// magnitude among k..N-1.
-template <int N>
-void pivots_step_by_step(const double (&diag)[N], int (&order)[N]) {
-  double rest[N];
-  for (int i = 0; i < N; ++i) {
-    rest[i] = diag[i];
-    order[i] = i;
-  }
-  for (int k = 0; k + 1 < N; ++k) {
-    int p = k;
-    for (int i = k + 1; i < N; ++i)
-      if (rest[i] > rest[p]) p = i;
-    std::swap(rest[k], rest[p]);
-    std::swap(order[k], order[p]);
-  }
-}
-
-template <int N>
-void expect_pivots_match(std::mt19937& rng) {
-  std::uniform_real_distribution<double> any(0.0, 10.0);
-  int kinds[4] = {0, 0, 0, 0};
-  for (int round = 0; round < 2000; ++round) {
-    const int kind = round % 4;  // distinct, ties, NaN, all equal
-    double diag[N];
-    for (double& x : diag) x = kind == 1 ? double(rng() % 3) : kind == 3 ? 0.5 : any(rng);
-    if (kind == 2) diag[rng() % N] = std::nan("");
-    int fast[N], slow[N];
-    pivot_order<N>(diag, fast);
-    pivots_step_by_step<N>(diag, slow);
-    ++kinds[kind];
-    for (int i = 0; i < N; ++i) ASSERT_EQ(fast[i], slow[i]) << "N " << N << " round " << round << " place " << i;
-  }
-  for (int k : kinds) EXPECT_EQ(k, 500);
-}
-
 }  // namespace
-
-// The pivot order counted at once equals the one taken step by step, with
-// distinct entries (counted), equal ones and NaN (stepped).
-TEST(FitLanes, PivotOrderIsEigensStepByStep) {
-  std::mt19937 rng(11);
-  expect_pivots_match<3>(rng);
-  expect_pivots_match<5>(rng);
-  expect_pivots_match<9>(rng);
-  expect_pivots_match<14>(rng);
-  // A hand-checked case: 2, 7, 7, 1 -> 7 (first), then 7, 2, 1.
-  const double diag[4] = {2.0, 7.0, 7.0, 1.0};
-  int order[4];
-  pivot_order<4>(diag, order);
-  EXPECT_EQ(std::vector<int>(order, order + 4), (std::vector<int>{1, 2, 0, 3}));
-}
 
 TEST(FitLanes, SameBitsAsOneAtATime) {
   std::mt19937 rng(5);
