@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace isoform {
@@ -62,7 +61,7 @@ void radix_sort(T* data, T* buffer, size_t n, int bits, const Key& key, int low_
   if (from != data) {
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
       const size_t begin = c * per, end = std::min(n, (c + 1) * per);
-      if (begin < end) std::memcpy(static_cast<void*>(data + begin), from + begin, (end - begin) * sizeof(T));
+      if (begin < end) std::copy(from + begin, from + end, data + begin);
     });
   }
 }

@@ -25,8 +25,9 @@ namespace {
 // lanes at the end, and the moments go to the factorisation as they are);
 // its shorter sets are padded with the origin, which adds 0 to every sum (no
 // moment or term has degree 0). Without AVX the compiler splits each vector
-// operation into two SSE2 ones, lane by lane, so both builds give the same
-// bits (no fused multiply-add in either: AVX alone has none).
+// operation into two SSE2 ones, lane by lane, so every build gives the same
+// bits (no fused multiply-add in any: the curvature sources are built with
+// -ffp-contract=off, libcore/CMakeLists.txt).
 typedef double Quad __attribute__((vector_size(32)));
 
 // A model's monomials u^i v^j: degrees lo to hi, within a degree by

@@ -86,7 +86,7 @@ VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int3
   n /= len;
   const Vector3d b1 = n.unitOrthogonal();
   const Vector3d b2 = n.cross(b1);
-  double u[kMaxValence + 3], w[kMaxValence + 3], d[kMaxValence + 3];
+  double u[kMaxValence + 1], w[kMaxValence + 1], d[kMaxValence + 1];
   const int32_t *first = rings.ring_begin(v), *last = rings.ring_end(v);
   const int count = mesh.precise_points.size() == mesh.points.size()
                         ? ring_coordinates(mesh.precise_points.data(), v, first, last, b1, b2, n, u, w, d)
