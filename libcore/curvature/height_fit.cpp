@@ -14,6 +14,7 @@
 
 #include "small_ldlt.h"
 #include "small_ldlt_lanes.h"
+#include "vector_level.h"
 
 namespace isoform {
 namespace {
@@ -228,18 +229,16 @@ HeightFit fit_plain(const double* u, const double* v, const double* d, int count
 // lacks them, chosen at run time: the same operations on 4 lanes, so the
 // same bits (no fused multiply-add: this file is built with
 // -ffp-contract=off, see CMakeLists.txt).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__AVX__)
-#define ISOFORM_AVX_CLONE 1
-#define ISOFORM_AVX512_TARGET __attribute__((target("avx512f,avx512vl")))
+#ifdef ISOFORM_AVX_CLONE
 template <int Lo, int Hi>
-__attribute__((target("avx"))) HeightFit fit_avx(const double* u, const double* v, const double* d, int count,
-                                                 double min_rcond) {
+ISOFORM_AVX_TARGET HeightFit fit_avx(const double* u, const double* v, const double* d, int count,
+                                     double min_rcond) {
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
 template <int Lo, int Hi>
-__attribute__((target("avx"))) void fit_lanes_avx(const double* const (&u)[4], const double* const (&v)[4],
-                                                  const double* const (&d)[4], const int (&count)[4], int lanes,
-                                                  double min_rcond, HeightFit (&out)[4]) {
+ISOFORM_AVX_TARGET void fit_lanes_avx(const double* const (&u)[4], const double* const (&v)[4],
+                                      const double* const (&d)[4], const int (&count)[4], int lanes,
+                                      double min_rcond, HeightFit (&out)[4]) {
   fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
 }
 template <int Lo, int Hi>
@@ -254,13 +253,6 @@ ISOFORM_AVX512_TARGET void fit_lanes_avx512(const double* const (&u)[4], const d
   fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
 }
 
-// 2: AVX-512 (F and VL), 1: AVX, 0: neither.
-int vector_level() {
-  static const int level = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") ? 2
-                           : __builtin_cpu_supports("avx")                                         ? 1
-                                                                                                   : 0;
-  return level;
-}
 #endif
 
 template <int Lo, int Hi>

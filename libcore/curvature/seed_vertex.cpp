@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "principal_lanes.h"
 #include "ring_coordinates.h"
 #include "small_ldlt.h"
+#include "small_ldlt_lanes.h"
+#include "vector_level.h"
 
 namespace isoform {
 namespace {
@@ -97,6 +100,194 @@ VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int3
   if (rings.nonmanifold(v)) r.flags |= kCurvatureNonmanifold;
   r.curvature = principal_curvatures_inline(fit, b1, b2, n);
   return r;
+}
+
+namespace {
+
+// The frame of four vertices from their unit normals, as Eigen's
+// unitOrthogonal and cross give it: b1 = (-y, x, 0) / |(x, y)| unless x and
+// y are both much smaller than z (|.| <= 1e-12 |z|), then (0, -z, y) /
+// |(y, z)|; b2 = n x b1.
+ISOFORM_LANES_INLINE void frame_lanes(const Vec3Lanes& n, Vec3Lanes& b1, Vec3Lanes& b2) {
+  const Lanes4 zero = splat4(0.0), one = splat4(1.0), limit = abs4(n.z) * splat4(1e-12);
+  const Mask4 near_z = (abs4(n.x) <= limit) & (abs4(n.y) <= limit);
+  const Lanes4 inv_xy = one / sqrt4(n.x * n.x + n.y * n.y), inv_yz = one / sqrt4(n.y * n.y + n.z * n.z);
+  b1.x = select4(near_z, zero, -n.y * inv_xy);
+  b1.y = select4(near_z, -n.z * inv_yz, n.x * inv_xy);
+  b1.z = select4(near_z, n.y * inv_yz, zero);
+  b2 = lanes_detail::cross(n, b1);
+}
+
+// seed_fit for four point sets side by side (point j of lane l at
+// u[j][l]; lanes with fewer points padded with zeros, which add exactly 0
+// to every sum and leave the largest radius as it is). ok[l] false where
+// seed_fit would return false for lane l.
+ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const Lanes4* d, int most, HeightFitLanes& out,
+                    bool (&ok)[4]) {
+  Lanes4 r2 = splat4(0.0);
+  for (int j = 0; j < most; ++j) r2 = max4(r2, u[j] * u[j] + v[j] * v[j]);
+  const Lanes4 scale = sqrt4(r2);
+  const Mask4 scaled = (scale > splat4(0.0)) & finite4(scale);
+  const Lanes4 inv = splat4(1.0) / scale;
+  Lanes4 moment[5] = {}, rhs[3] = {};
+  for (int j = 0; j < most; ++j) {
+    const Lanes4 x = u[j] * inv, y = v[j] * inv, h = d[j];
+    const Lanes4 x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
+    moment[0] += x3 * x;
+    moment[1] += x3 * y;
+    moment[2] += x2 * y2;
+    moment[3] += x * y3;
+    moment[4] += y3 * y;
+    rhs[0] += h * x2;
+    rhs[1] += h * (x * y);
+    rhs[2] += h * y2;
+  }
+  static constexpr int at[3][3] = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
+  SmallLdltLanes<3> ldlt;
+  bool factored[4];
+  ldlt.factor(moment, at, factored);
+  Lanes4 hi = splat4(0.0), lo = ldlt.diagonal(0);
+  for (int i = 0; i < 3; ++i) {
+    hi = max4(hi, abs4(ldlt.diagonal(i)));
+    lo = min4(lo, ldlt.diagonal(i));
+  }
+  const Lanes4 rcond = select4(hi > splat4(0.0), lo / hi, splat4(0.0));
+  const Mask4 conditioned = (lo > splat4(0.0)) & (rcond >= splat4(1e-10));
+  Lanes4 c[3];
+  ldlt.solve(rhs, c);
+  const Mask4 finite = finite4(c[0]) & finite4(c[1]) & finite4(c[2]);
+  const Mask4 good = scaled & conditioned & finite;
+  for (int l = 0; l < 4; ++l) ok[l] = factored[l] && good[l] != 0;
+  const Lanes4 s2 = scale * scale;
+  out.fu = out.fv = splat4(0.0);
+  out.fuu = splat4(2.0) * c[0] / s2;
+  out.fuv = c[1] / s2;
+  out.fvv = splat4(2.0) * c[2] / s2;
+}
+
+// Local coordinates and heights of the lanes' one-rings, point j of lane l
+// in lane l of u[j], v[j], d[j], the lanes with fewer points padded with
+// zeros. A lane where a neighbour coincides with its vertex (which
+// ring_coordinates would leave out) is marked in `coincide`.
+template <class Real>
+ISOFORM_LANES_INLINE int ring_lanes(const Real* points, const int32_t (&vertex)[4], const int32_t* const (&ring)[4],
+               const int (&valence)[4], const Vec3Lanes& b1, const Vec3Lanes& b2, const Vec3Lanes& n, Lanes4* u,
+               Lanes4* v, Lanes4* d, bool (&coincide)[4]) {
+  // Vectors are built whole from scalars in registers (not written lane by
+  // lane through memory, which stalls the vector read that follows).
+  const Real *q0 = points + 3 * size_t(vertex[0]), *q1 = points + 3 * size_t(vertex[1]),
+             *q2 = points + 3 * size_t(vertex[2]), *q3 = points + 3 * size_t(vertex[3]);
+  const Lanes4 ox = {double(q0[0]), double(q1[0]), double(q2[0]), double(q3[0])};
+  const Lanes4 oy = {double(q0[1]), double(q1[1]), double(q2[1]), double(q3[1])};
+  const Lanes4 oz = {double(q0[2]), double(q1[2]), double(q2[2]), double(q3[2])};
+  const int most = std::max(std::max(valence[0], valence[1]), std::max(valence[2], valence[3]));
+  const Lanes4 zero = splat4(0.0);
+  Mask4 any_same = {0, 0, 0, 0};
+  for (int j = 0; j < most; ++j) {
+    const bool h0 = j < valence[0], h1 = j < valence[1], h2 = j < valence[2], h3 = j < valence[3];
+    const Mask4 here = {-int64_t(h0), -int64_t(h1), -int64_t(h2), -int64_t(h3)};
+    const Real *p0 = h0 ? points + 3 * size_t(ring[0][j]) : q0, *p1 = h1 ? points + 3 * size_t(ring[1][j]) : q1,
+               *p2 = h2 ? points + 3 * size_t(ring[2][j]) : q2, *p3 = h3 ? points + 3 * size_t(ring[3][j]) : q3;
+    const Lanes4 x = Lanes4{double(p0[0]), double(p1[0]), double(p2[0]), double(p3[0])} - ox;
+    const Lanes4 y = Lanes4{double(p0[1]), double(p1[1]), double(p2[1]), double(p3[1])} - oy;
+    const Lanes4 z = Lanes4{double(p0[2]), double(p1[2]), double(p2[2]), double(p3[2])} - oz;
+    const Lanes4 uu = (x * b1.x + y * b1.y) + z * b1.z, vv = (x * b2.x + y * b2.y) + z * b2.z;
+    u[j] = select4(here, uu, zero);
+    v[j] = select4(here, vv, zero);
+    d[j] = select4(here, (x * n.x + y * n.y) + z * n.z, zero);
+    any_same |= here & (uu == zero) & (vv == zero);
+  }
+  for (int l = 0; l < 4; ++l) coincide[l] = any_same[l] != 0;
+  return most;
+}
+
+ISOFORM_LANES_INLINE PrincipalCurvatures lane_of(const PrincipalLanes& p, int l) {
+  PrincipalCurvatures c;
+  c.k1 = p.k1[l];
+  c.k2 = p.k2[l];
+  c.d1 = {p.d1.x[l], p.d1.y[l], p.d1.z[l]};
+  c.d2 = {p.d2.x[l], p.d2.y[l], p.d2.z[l]};
+  c.normal = {p.normal.x[l], p.normal.y[l], p.normal.z[l]};
+  return c;
+}
+
+ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                                             VertexFitScratch& s, VertexFitResult (&out)[4]) {
+  // Lanes that the short path cannot settle at once (no usable normal,
+  // fewer than three points, a large valence, a neighbour on the vertex)
+  // go through fit_seed_vertex alone.
+  bool alone[4] = {true, true, true, true};
+  int32_t vertex[4];
+  const int32_t* ring[4];
+  int valence[4];
+  const bool normals = mesh.normals.size() == mesh.points.size();
+  static const float kUp[3] = {0.0f, 0.0f, 1.0f};
+  const float* q[4];
+  for (int l = 0; l < 4; ++l) {
+    vertex[l] = first + std::min(l, count - 1);
+    ring[l] = rings.ring_begin(vertex[l]);
+    valence[l] = 0;
+    q[l] = kUp;
+    out[l] = VertexFitResult{};
+    if (l >= count || !normals) continue;
+    const size_t m = rings.valence(vertex[l]);
+    if (m < size_t(fit_terms(FitModel::SeedQuadratic)) || m > kMaxValence) continue;
+    q[l] = &mesh.normals[3 * size_t(vertex[l])];
+    valence[l] = int(m);
+    alone[l] = false;
+  }
+  Vec3Lanes n = {Lanes4{q[0][0], q[1][0], q[2][0], q[3][0]}, Lanes4{q[0][1], q[1][1], q[2][1], q[3][1]},
+                 Lanes4{q[0][2], q[1][2], q[2][2], q[3][2]}};
+  // frame_normal's test and normalisation of the given normals.
+  const Lanes4 len = sqrt4((n.x * n.x + n.y * n.y) + n.z * n.z);
+  const Mask4 usable = finite4(len) & (len > splat4(0.5));
+  for (int l = 0; l < 4; ++l)
+    if (!usable[l]) alone[l] = true;
+  n = {n.x / len, n.y / len, n.z / len};
+  Vec3Lanes b1, b2;
+  frame_lanes(n, b1, b2);
+  Lanes4 u[kMaxValence], v[kMaxValence], d[kMaxValence];
+  bool coincide[4];
+  const int most = mesh.precise_points.size() == mesh.points.size()
+                       ? ring_lanes(mesh.precise_points.data(), vertex, ring, valence, b1, b2, n, u, v, d, coincide)
+                       : ring_lanes(mesh.points.data(), vertex, ring, valence, b1, b2, n, u, v, d, coincide);
+  HeightFitLanes fit;
+  bool ok[4];
+  seed_fit_lanes(u, v, d, most, fit, ok);
+  const PrincipalLanes p = principal_curvatures_lanes(fit, b1, b2, n);
+  for (int l = 0; l < count; ++l) {
+    if (alone[l] || coincide[l] || !ok[l]) {
+      out[l] = fit_seed_vertex(mesh, rings, vertex[l], s);
+      continue;
+    }
+    if (rings.nonmanifold(vertex[l])) out[l].flags |= kCurvatureNonmanifold;
+    out[l].curvature = lane_of(p, l);
+  }
+}
+
+// The four-lane path built for AVX too, chosen at run time (vector_level.h):
+// the same operations, so the same bits; the baseline build splits each
+// vector operation into two or four.
+void seed_vertices_plain(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
+                         VertexFitResult (&out)[4]) {
+  seed_vertices_body(mesh, rings, first, count, s, out);
+}
+
+#ifdef ISOFORM_AVX_CLONE
+ISOFORM_AVX_TARGET void seed_vertices_avx(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                                          VertexFitScratch& s, VertexFitResult (&out)[4]) {
+  seed_vertices_body(mesh, rings, first, count, s, out);
+}
+#endif
+
+}  // namespace
+
+void fit_seed_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
+                       VertexFitResult (&out)[4]) {
+#ifdef ISOFORM_AVX_CLONE
+  if (vector_level() > 0) return seed_vertices_avx(mesh, rings, first, count, s, out);
+#endif
+  seed_vertices_plain(mesh, rings, first, count, s, out);
 }
 
 }  // namespace isoform

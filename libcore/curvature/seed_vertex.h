@@ -13,4 +13,11 @@ namespace isoform {
 // go through fit_vertex.
 VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, VertexFitScratch& scratch);
 
+// fit_seed_vertex for the vertices first .. first + count - 1 (count 1 to
+// 4) into out, bit for bit: the short path's steps for the four side by
+// side, one vertex per lane of a vector (lanes4.h), with the same
+// operations in the same order in every lane.
+void fit_seed_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                       VertexFitScratch& scratch, VertexFitResult (&out)[4]);
+
 }  // namespace isoform

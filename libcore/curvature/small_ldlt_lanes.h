@@ -7,9 +7,9 @@
 #include <cmath>
 #include <limits>
 
-namespace isoform {
+#include "lanes4.h"
 
-typedef double Lanes4 __attribute__((vector_size(32)));
+namespace isoform {
 
 template <int N>
 class SmallLdltLanes {
@@ -47,17 +47,18 @@ class SmallLdltLanes {
 
   double d(int lane, int i) const { return m_[i][i][lane]; }
 
-  // SmallLdlt::solve for every lane: x[l] from lane l of b.
-  __attribute__((always_inline)) void solve(const Lanes4* b, double* const (&x)[4]) const {
+  // The i-th entry of D in every lane.
+  Lanes4 diagonal(int i) const { return m_[i][i]; }
+
+  // SmallLdlt::solve for every lane: lane l of x from lane l of b.
+  __attribute__((always_inline)) void solve(const Lanes4* b, Lanes4* x) const {
     Lanes4 y[N];
     for (int i = 0; i < N; ++i) y[i] = b[i];
 #pragma GCC unroll 16
     for (int j = 0; j < N; ++j)
 #pragma GCC unroll 16
       for (int i = j + 1; i < N; ++i) y[i] -= m_[i][j] * y[j];
-    const Lanes4 tiny = {std::numeric_limits<double>::min(), std::numeric_limits<double>::min(),
-                         std::numeric_limits<double>::min(), std::numeric_limits<double>::min()};
-    const Lanes4 zero = {0.0, 0.0, 0.0, 0.0};
+    const Lanes4 tiny = splat4(std::numeric_limits<double>::min()), zero = splat4(0.0);
     for (int i = 0; i < N; ++i) {
       const Lanes4 dd = m_[i][i];
       const Lanes4 mag = dd < zero ? -dd : dd;
@@ -67,6 +68,13 @@ class SmallLdltLanes {
     for (int j = N - 1; j >= 0; --j)
 #pragma GCC unroll 16
       for (int i = 0; i < j; ++i) y[i] -= m_[j][i] * y[j];
+    for (int i = 0; i < N; ++i) x[i] = y[i];
+  }
+
+  // The same, lane l's solution into x[l][0 .. N - 1].
+  __attribute__((always_inline)) void solve(const Lanes4* b, double* const (&x)[4]) const {
+    Lanes4 y[N];
+    solve(b, y);
     for (int i = 0; i < N; ++i) {
       const Lanes4 yi = y[i];
       x[0][i] = yi[0];

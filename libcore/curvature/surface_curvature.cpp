@@ -88,17 +88,17 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
       return;
     }
     VertexFitScratch& s = scratch.local();
-    if (seed) {
-      for (size_t v = range.begin(); v < range.end(); ++v) keep(v, fit_seed_vertex(mesh, rings, int32_t(v), s));
-    } else {
-      VertexFitResult group[4];
-      for (size_t first = range.begin(); first < range.end(); first += 4) {
-        // Four vertices at a time (fit_vertices); each result is the one
-        // fit_vertex gives, so the grouping cannot change a bit.
-        const int count = int(std::min<size_t>(4, range.end() - first));
+    // Four vertices at a time (fit_seed_vertices, fit_vertices); each
+    // result is the one the one-vertex fit gives, so the grouping cannot
+    // change a bit.
+    VertexFitResult group[4];
+    for (size_t first = range.begin(); first < range.end(); first += 4) {
+      const int count = int(std::min<size_t>(4, range.end() - first));
+      if (seed)
+        fit_seed_vertices(mesh, rings, int32_t(first), count, s, group);
+      else
         fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
-        for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
-      }
+      for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
     }
     progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
   };

@@ -1,7 +1,7 @@
 // The one-ring table (VertexRings) on hand-built fans, against the order and
 // flags worked out by hand, on both of its paths (up to 8 triangles at a
 // vertex and more); and the seed's short path (fit_seed_vertex) against
-// fit_vertex, bit for bit.
+// fit_vertex, and its four-lane form against it, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,30 +90,61 @@ TEST(VertexRings, TwoFansAtOneVertexAndRepeatedCornersAndIsolatedVertices) {
   EXPECT_EQ(r.valence(6), 0u);
 }
 
-TEST(SeedVertex, ShortPathMatchesFitVertex) {
+namespace {
+
+// The same result, bit for bit.
+void expect_same(const VertexFitResult& x, const VertexFitResult& y, int32_t v) {
+  EXPECT_EQ(x.flags, y.flags) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(&x.curvature.k1, &y.curvature.k1, sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(&x.curvature.k2, &y.curvature.k2, sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(x.curvature.d1.data(), y.curvature.d1.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(x.curvature.d2.data(), y.curvature.d2.data(), 3 * sizeof(double)), 0) << "vertex " << v;
+  EXPECT_EQ(std::memcmp(x.curvature.normal.data(), y.curvature.normal.data(), 3 * sizeof(double)), 0)
+      << "vertex " << v;
+}
+
+// A jittered torus, an open graph, and the graph with unusable normals
+// (zero, NaN) at some vertices, a neighbour moved onto its vertex, and
+// float points only.
+std::vector<Mesh> seed_meshes() {
   std::vector<truth::Exact> exact;
   Mesh jittered = truth::shape_mesh(truth::Shape::Torus, 40, 0.25, 5, exact);
   estimate_normals(jittered);
   Mesh open = truth::graph_mesh(truth::table41_graphs()[4], 21);
   estimate_normals(open);
-  // Unusable normals (zero, NaN) at some vertices, and float points only.
   Mesh broken = open;
   broken.normals[3 * 7] = broken.normals[3 * 7 + 1] = broken.normals[3 * 7 + 2] = 0.0f;
   broken.normals[3 * 30 + 1] = std::nanf("");
+  const VertexRings rings(broken);
+  const int32_t w = *rings.ring_begin(50);
+  for (int a = 0; a < 3; ++a) broken.points[3 * size_t(w) + size_t(a)] = broken.points[3 * 50 + size_t(a)];
   broken.precise_points.clear();
-  for (const Mesh* m : {&jittered, &open, &broken}) {
-    const VertexRings rings(*m);
+  return {jittered, open, broken};
+}
+
+}  // namespace
+
+TEST(SeedVertex, ShortPathMatchesFitVertex) {
+  for (const Mesh& m : seed_meshes()) {
+    const VertexRings rings(m);
     VertexFitScratch a, b;
-    for (int32_t v = 0; v < int32_t(m->vertex_count()); ++v) {
-      const VertexFitResult x = fit_seed_vertex(*m, rings, v, a);
-      const VertexFitResult y = fit_vertex(*m, rings, v, CurvatureMethod::Seed, 0, b);
-      EXPECT_EQ(x.flags, y.flags) << "vertex " << v;
-      EXPECT_EQ(std::memcmp(&x.curvature.k1, &y.curvature.k1, sizeof(double)), 0) << "vertex " << v;
-      EXPECT_EQ(std::memcmp(&x.curvature.k2, &y.curvature.k2, sizeof(double)), 0) << "vertex " << v;
-      EXPECT_EQ(std::memcmp(x.curvature.d1.data(), y.curvature.d1.data(), 3 * sizeof(double)), 0) << "vertex " << v;
-      EXPECT_EQ(std::memcmp(x.curvature.d2.data(), y.curvature.d2.data(), 3 * sizeof(double)), 0) << "vertex " << v;
-      EXPECT_EQ(std::memcmp(x.curvature.normal.data(), y.curvature.normal.data(), 3 * sizeof(double)), 0)
-          << "vertex " << v;
-    }
+    for (int32_t v = 0; v < int32_t(m.vertex_count()); ++v)
+      expect_same(fit_seed_vertex(m, rings, v, a), fit_vertex(m, rings, v, CurvatureMethod::Seed, 0, b), v);
+  }
+}
+
+// Four vertices side by side, and the shorter groups at the end of a
+// range, give what the one-vertex short path gives.
+TEST(SeedVertex, FourLanesMatchOneVertex) {
+  for (const Mesh& m : seed_meshes()) {
+    const VertexRings rings(m);
+    VertexFitScratch a, b;
+    const int32_t n = int32_t(m.vertex_count());
+    for (int count = 1; count <= 4; ++count)
+      for (int32_t first = 0; first + count <= n; first += count) {
+        VertexFitResult group[4];
+        fit_seed_vertices(m, rings, first, count, a, group);
+        for (int i = 0; i < count; ++i) expect_same(group[i], fit_seed_vertex(m, rings, first + i, b), first + i);
+      }
   }
 }
