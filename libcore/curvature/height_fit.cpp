@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "small_ldlt.h"
 #include "small_ldlt_lanes.h"
@@ -167,41 +168,54 @@ inline __attribute__((always_inline)) HeightFit fit_body(const double* u, const 
   return out;
 }
 
-// fit_body for lanes point sets (1 to 4) at once. A lane whose matrix the
-// four-lane factorisation cannot take (a zero or non-finite pivot) is fitted
-// again alone, so every lane's result is fit_body's, bit for bit.
+// One lane of fit_height_lanes' layout fitted alone (the rare lane the
+// four-lane factorisation cannot take).
 template <int Lo, int Hi>
-inline __attribute__((always_inline)) void fit_lanes_body(const double* const (&u)[4], const double* const (&v)[4],
-                                                          const double* const (&d)[4], const int (&count)[4],
-                                                          int lanes, double min_rcond, HeightFit (&out)[4]) {
+HeightFit fit_lane_alone(const double* u, const double* v, const double* d, int lane, int count, double min_rcond) {
+  std::vector<double> a(3 * size_t(count));
+  for (int j = 0; j < count; ++j) {
+    a[size_t(j)] = u[4 * size_t(j) + size_t(lane)];
+    a[size_t(count + j)] = v[4 * size_t(j) + size_t(lane)];
+    a[size_t(2 * count + j)] = d[4 * size_t(j) + size_t(lane)];
+  }
+  return fit_body<Lo, Hi>(a.data(), a.data() + count, a.data() + 2 * count, count, min_rcond);
+}
+
+// fit_body for four point sets side by side (fit_height_lanes' layout). A
+// lane whose matrix the four-lane factorisation cannot take (a zero or
+// non-finite pivot) is fitted again alone, so every lane's result is
+// fit_body's, bit for bit.
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) void fit_lanes_body(const double* u, const double* v, const double* d,
+                                                          const int (&count)[4], double min_rcond,
+                                                          HeightFit (&out)[4]) {
   using M = Model<Lo, Hi>;
   constexpr int kTerms = M::kTerms;
+  const int most = std::max(std::max(count[0], count[1]), std::max(count[2], count[3]));
+  auto at = [](const double* a, int j) {
+    Quad q;
+    __builtin_memcpy(&q, a + 4 * size_t(j), sizeof(q));
+    return q;
+  };
+  // scale_of in every lane: the largest |(u, v)| (the zeros of the padding
+  // leave it as it is), as std::max takes it.
+  Quad r2 = {0.0, 0.0, 0.0, 0.0};
+  for (int j = 0; j < most; ++j) {
+    const Quad x = at(u, j), y = at(v, j), q = x * x + y * y;
+    r2 = r2 < q ? q : r2;
+  }
   double scale[4];
-  bool live[4] = {false, false, false, false};
-  int any = -1, most = 0, in[4] = {0, 0, 0, 0};
+  bool live[4];
   Quad inv = {0.0, 0.0, 0.0, 0.0};
   for (int l = 0; l < 4; ++l) {
     out[l] = HeightFit{};
-    live[l] = l < lanes && scale_of<Lo, Hi>(u[l], v[l], count[l], scale[l]);
-    if (!live[l]) continue;
-    any = l;
-    inv[l] = 1.0 / scale[l];
-    in[l] = count[l];
-    most = std::max(most, count[l]);
+    scale[l] = std::sqrt(r2[l]);
+    live[l] = count[l] >= kTerms && scale[l] > 0.0 && std::isfinite(scale[l]);
+    if (live[l]) inv[l] = 1.0 / scale[l];
   }
-  if (any < 0) return;
-  // The four point sets side by side, point j of each in its lane.
+  if (!(live[0] || live[1] || live[2] || live[3])) return;
   Quad m[M::kMoments] = {}, r[kTerms] = {};
-  for (int j = 0; j < most; ++j) {
-    Quad x, y, h;
-    for (int l = 0; l < 4; ++l) {
-      const bool here = j < in[l];
-      x[l] = here ? u[l][j] : 0.0;
-      y[l] = here ? v[l][j] : 0.0;
-      h[l] = here ? d[l][j] : 0.0;
-    }
-    add_point<Lo, Hi>(x * inv, y * inv, h, m, r);
-  }
+  for (int j = 0; j < most; ++j) add_point<Lo, Hi>(at(u, j) * inv, at(v, j) * inv, at(d, j), m, r);
   static const GramIndex<Lo, Hi> index;
   SmallLdltLanes<kTerms> ldlt;
   bool factored[4];
@@ -209,10 +223,10 @@ inline __attribute__((always_inline)) void fit_lanes_body(const double* const (&
   double c[4][kTerms];
   double* x[4] = {c[0], c[1], c[2], c[3]};
   ldlt.solve(r, x);
-  for (int l = 0; l < lanes; ++l) {
+  for (int l = 0; l < 4; ++l) {
     if (!live[l]) continue;
     if (!factored[l]) {
-      out[l] = fit_body<Lo, Hi>(u[l], v[l], d[l], count[l], min_rcond);
+      out[l] = fit_lane_alone<Lo, Hi>(u, v, d, l, count[l], min_rcond);
       continue;
     }
     if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, out[l])) finish<Lo, Hi>(c[l], scale[l], out[l]);
@@ -236,10 +250,9 @@ ISOFORM_AVX_TARGET HeightFit fit_avx(const double* u, const double* v, const dou
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
 template <int Lo, int Hi>
-ISOFORM_AVX_TARGET void fit_lanes_avx(const double* const (&u)[4], const double* const (&v)[4],
-                                      const double* const (&d)[4], const int (&count)[4], int lanes,
+ISOFORM_AVX_TARGET void fit_lanes_avx(const double* u, const double* v, const double* d, const int (&count)[4],
                                       double min_rcond, HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
 }
 template <int Lo, int Hi>
 ISOFORM_AVX512_TARGET HeightFit fit_avx512(const double* u, const double* v, const double* d, int count,
@@ -247,31 +260,30 @@ ISOFORM_AVX512_TARGET HeightFit fit_avx512(const double* u, const double* v, con
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
 template <int Lo, int Hi>
-ISOFORM_AVX512_TARGET void fit_lanes_avx512(const double* const (&u)[4], const double* const (&v)[4],
-                                            const double* const (&d)[4], const int (&count)[4], int lanes,
-                                            double min_rcond, HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+ISOFORM_AVX512_TARGET void fit_lanes_avx512(const double* u, const double* v, const double* d,
+                                            const int (&count)[4], double min_rcond, HeightFit (&out)[4]) {
+  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
 }
 
 #endif
 
 template <int Lo, int Hi>
-void fit_lanes_plain(const double* const (&u)[4], const double* const (&v)[4], const double* const (&d)[4],
-                     const int (&count)[4], int lanes, double min_rcond, HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+void fit_lanes_plain(const double* u, const double* v, const double* d, const int (&count)[4], double min_rcond,
+                     HeightFit (&out)[4]) {
+  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
 }
 
 template <int Lo, int Hi>
-void fit_lanes(const double* const (&u)[4], const double* const (&v)[4], const double* const (&d)[4],
-               const int (&count)[4], int lanes, double min_rcond, HeightFit (&out)[4]) {
+void fit_lanes(const double* u, const double* v, const double* d, const int (&count)[4], double min_rcond,
+               HeightFit (&out)[4]) {
 #ifdef ISOFORM_AVX_CLONE
   switch (vector_level()) {
-    case 2: return fit_lanes_avx512<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
-    case 1: return fit_lanes_avx<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+    case 2: return fit_lanes_avx512<Lo, Hi>(u, v, d, count, min_rcond, out);
+    case 1: return fit_lanes_avx<Lo, Hi>(u, v, d, count, min_rcond, out);
     default: break;
   }
 #endif
-  fit_lanes_plain<Lo, Hi>(u, v, d, count, lanes, min_rcond, out);
+  fit_lanes_plain<Lo, Hi>(u, v, d, count, min_rcond, out);
 }
 
 template <int Lo, int Hi>
@@ -309,14 +321,13 @@ HeightFit fit_height(FitModel model, const double* u, const double* v, const dou
   return HeightFit{};
 }
 
-void fit_height_lanes(FitModel model, const double* const (&u)[4], const double* const (&v)[4],
-                      const double* const (&d)[4], const int (&count)[4], int lanes, HeightFit (&out)[4],
-                      double min_rcond) {
+void fit_height_lanes(FitModel model, const double* u, const double* v, const double* d, const int (&count)[4],
+                      HeightFit (&out)[4], double min_rcond) {
   switch (model) {
-    case FitModel::SeedQuadratic: return fit_lanes<2, 2>(u, v, d, count, lanes, min_rcond, out);
-    case FitModel::Quadric: return fit_lanes<1, 2>(u, v, d, count, lanes, min_rcond, out);
-    case FitModel::Cubic: return fit_lanes<1, 3>(u, v, d, count, lanes, min_rcond, out);
-    case FitModel::Quartic: return fit_lanes<1, 4>(u, v, d, count, lanes, min_rcond, out);
+    case FitModel::SeedQuadratic: return fit_lanes<2, 2>(u, v, d, count, min_rcond, out);
+    case FitModel::Quadric: return fit_lanes<1, 2>(u, v, d, count, min_rcond, out);
+    case FitModel::Cubic: return fit_lanes<1, 3>(u, v, d, count, min_rcond, out);
+    case FitModel::Quartic: return fit_lanes<1, 4>(u, v, d, count, min_rcond, out);
   }
 }
 

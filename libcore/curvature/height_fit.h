@@ -34,12 +34,13 @@ struct HeightFit {
 HeightFit fit_height(FitModel model, const double* u, const double* v, const double* d, int count,
                      double min_rcond = 1e-10);
 
-// fit_height on `lanes` (1 to 4) point sets at once, lane l from u[l], v[l],
-// d[l], count[l] into out[l]: the same results, bit for bit, as one call
-// per lane, about twice as fast for the larger models (the factorisations
-// run side by side in the lanes of a vector).
-void fit_height_lanes(FitModel model, const double* const (&u)[4], const double* const (&v)[4],
-                      const double* const (&d)[4], const int (&count)[4], int lanes, HeightFit (&out)[4],
-                      double min_rcond = 1e-10);
+// fit_height on four point sets at once, side by side: point j of set l at
+// u[4 j + l], v[4 j + l], d[4 j + l], count[l] points in set l (0 for an
+// unused lane), every set padded with zeros up to the longest. out[l] is
+// what fit_height gives for set l alone, bit for bit, about twice as fast
+// for the larger models (the sums and factorisations run in the lanes of a
+// vector).
+void fit_height_lanes(FitModel model, const double* u, const double* v, const double* d, const int (&count)[4],
+                      HeightFit (&out)[4], double min_rcond = 1e-10);
 
 }  // namespace isoform

@@ -31,6 +31,11 @@ struct PrincipalCurvatures {
 PrincipalCurvatures principal_curvatures(const HeightFit& fit, const Eigen::Vector3d& b1,
                                          const Eigen::Vector3d& b2, const Eigen::Vector3d& n);
 
+// principal_curvatures for four fits at once: out[l] is, bit for bit,
+// principal_curvatures(f[l], b1[l], b2[l], n[l]) (principal_lanes.h).
+void principal_curvatures4(const HeightFit (&f)[4], const Eigen::Vector3d (&b1)[4], const Eigen::Vector3d (&b2)[4],
+                           const Eigen::Vector3d (&n)[4], PrincipalCurvatures (&out)[4]);
+
 // principal_curvatures' body, inline: a caller whose fit has no linear terms
 // (fu = fv = 0 known to the compiler) gets the steps that are exact for them
 // folded away, with the same bits.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "lanes4.h"
+#include "principal.h"
 
 namespace isoform {
 
@@ -67,6 +68,17 @@ ISOFORM_LANES_INLINE PrincipalLanes principal_curvatures_lanes(const HeightFitLa
   pc.d1 = normalized({e0 * xu.x + e1 * xv.x, e0 * xu.y + e1 * xv.y, e0 * xu.z + e1 * xv.z});
   pc.d2 = normalized(cross(pc.normal, pc.d1));
   return pc;
+}
+
+// Lane l of p as principal_curvatures gives it.
+ISOFORM_LANES_INLINE PrincipalCurvatures principal_of_lane(const PrincipalLanes& p, int l) {
+  PrincipalCurvatures c;
+  c.k1 = p.k1[l];
+  c.k2 = p.k2[l];
+  c.d1 = {p.d1.x[l], p.d1.y[l], p.d1.z[l]};
+  c.d2 = {p.d2.x[l], p.d2.y[l], p.d2.z[l]};
+  c.normal = {p.normal.x[l], p.normal.y[l], p.normal.z[l]};
+  return c;
 }
 
 }  // namespace isoform

@@ -14,9 +14,10 @@ namespace isoform {
 
 // Writes u, v and the height d of every neighbour in [ring, end) into pu, pv,
 // pd and returns how many were kept: a neighbour that coincides with the
-// vertex (u = v = 0) carries nothing and is left out. Each array needs one
-// entry to spare, since a point is written before it is known to stay.
-template <class Real>
+// vertex (u = v = 0) carries nothing and is left out. Point j goes to entry
+// j * Stride (the four-lane fits' layout has Stride 4). Each array needs
+// one entry to spare, since a point is written before it is known to stay.
+template <int Stride = 1, class Real>
 int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const int32_t* end,
                      const Eigen::Vector3d& b1, const Eigen::Vector3d& b2, const Eigen::Vector3d& n, double* pu,
                      double* pv, double* pd) {
@@ -32,9 +33,9 @@ int ring_coordinates(const Real* points, int32_t v, const int32_t* ring, const i
     const double x = double(p[0]) - ox, y = double(p[1]) - oy, z = double(p[2]) - oz;
     const double u = x * e0 + y * e1 + z * e2, vv = x * f0 + y * f1 + z * f2;
     // Written always, kept unless it coincides with the vertex (no branch).
-    pu[count] = u;
-    pv[count] = vv;
-    pd[count] = x * n0 + y * n1 + z * n2;
+    pu[Stride * count] = u;
+    pv[Stride * count] = vv;
+    pd[Stride * count] = x * n0 + y * n1 + z * n2;
     count += !(u == 0.0 && vv == 0.0);
   }
   return count;

@@ -201,16 +201,6 @@ ISOFORM_LANES_INLINE int ring_lanes(const Real* points, const int32_t (&vertex)[
   return most;
 }
 
-ISOFORM_LANES_INLINE PrincipalCurvatures lane_of(const PrincipalLanes& p, int l) {
-  PrincipalCurvatures c;
-  c.k1 = p.k1[l];
-  c.k2 = p.k2[l];
-  c.d1 = {p.d1.x[l], p.d1.y[l], p.d1.z[l]};
-  c.d2 = {p.d2.x[l], p.d2.y[l], p.d2.z[l]};
-  c.normal = {p.normal.x[l], p.normal.y[l], p.normal.z[l]};
-  return c;
-}
-
 ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
                                              VertexFitScratch& s, VertexFitResult (&out)[4]) {
   // Lanes that the short path cannot settle at once (no usable normal,
@@ -261,7 +251,7 @@ ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings
       continue;
     }
     if (rings.nonmanifold(vertex[l])) out[l].flags |= kCurvatureNonmanifold;
-    out[l].curvature = lane_of(p, l);
+    out[l].curvature = principal_of_lane(p, l);
   }
 }
 

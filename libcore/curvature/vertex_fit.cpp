@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ring_coordinates.h"
@@ -86,27 +87,28 @@ bool frame_normal(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near,
   return false;
 }
 
-// Local coordinates (4.27) and signed heights (4.24) of the gathered points;
-// points that coincide with the vertex carry nothing and are left out.
-// s's arrays get one entry to spare: the last point is written before it is
-// known whether it stays.
-template <class Real>
-int local_coordinates(const Real* points, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+// Local coordinates (4.27) and signed heights (4.24) of the gathered points
+// into u, v, d at entries 0, Stride, 2 Stride, ... (ring_coordinates.h);
+// points that coincide with the vertex carry nothing and are left out. The
+// arrays need room for one point more than `near` holds.
+template <int Stride>
+int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+                      const Vector3d& b2, const Vector3d& n, double* u, double* w, double* d) {
+  const int32_t *first = near.data(), *last = near.data() + near.size();
+  if (mesh.precise_points.size() == mesh.points.size())
+    return ring_coordinates<Stride>(mesh.precise_points.data(), v, first, last, b1, b2, n, u, w, d);
+  return ring_coordinates<Stride>(mesh.points.data(), v, first, last, b1, b2, n, u, w, d);
+}
+
+// The same into s's arrays, one point after another.
+int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
                       const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
   if (s.u.size() < near.size() + 1) {
     s.u.resize(near.size() + 1);
     s.v.resize(near.size() + 1);
     s.d.resize(near.size() + 1);
   }
-  return ring_coordinates(points, v, near.data(), near.data() + near.size(), b1, b2, n, s.u.data(), s.v.data(),
-                          s.d.data());
-}
-
-int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
-                      const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
-  if (mesh.precise_points.size() == mesh.points.size())
-    return local_coordinates(mesh.precise_points.data(), v, near, b1, b2, n, s);
-  return local_coordinates(mesh.points.data(), v, near, b1, b2, n, s);
+  return local_coordinates<1>(mesh, v, near, b1, b2, n, s.u.data(), s.v.data(), s.d.data());
 }
 
 // Steps (i) to (iii) of one vertex: its flags, plan and frame, the platelet
@@ -183,46 +185,56 @@ VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v
 
 void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
                   int extra_rings, VertexFitScratch& s, VertexFitResult (&out)[4]) {
-  // Lane k of the side-by-side fit holds vertex first + vertex_of[k].
+  // Vertex first + l in lane l of the side-by-side fit: its platelet's
+  // points at 4 j + l of s.lanes (fit_height_lanes' layout).
   Start st[4];
-  int vertex_of[4], lanes = 0;
-  const double* u[4] = {};
-  const double* v[4] = {};
-  const double* d[4] = {};
   int points[4] = {0, 0, 0, 0};
   bool alone[4] = {false, false, false, false};
   const FitModel model = plan_of(method).model;
-  for (int i = 0; i < count; ++i) {
-    const int32_t vertex = first + i;
-    out[i] = VertexFitResult{};
-    if (!start_vertex(mesh, rings, vertex, method, extra_rings, s, out[i], st[i])) continue;
-    PlateletPoints& p = s.lanes[lanes];
-    const int m = local_coordinates(mesh, vertex, s.rings.out, st[i].b1, st[i].b2, st[i].n, p);
-    if (m < points_wanted(model)) {
-      alone[i] = true;
-      continue;
+  PlateletPoints& p = s.lanes;
+  for (int l = 0; l < count; ++l) {
+    const int32_t vertex = first + l;
+    out[l] = VertexFitResult{};
+    if (!start_vertex(mesh, rings, vertex, method, extra_rings, s, out[l], st[l])) continue;
+    const size_t room = 4 * (s.rings.out.size() + 1);
+    if (p.u.size() < room) {
+      p.u.resize(room);
+      p.v.resize(room);
+      p.d.resize(room);
     }
-    u[lanes] = p.u.data();
-    v[lanes] = p.v.data();
-    d[lanes] = p.d.data();
-    points[lanes] = m;
-    vertex_of[lanes++] = i;
+    const int m = local_coordinates<4>(mesh, vertex, s.rings.out, st[l].b1, st[l].b2, st[l].n, p.u.data() + l,
+                                       p.v.data() + l, p.d.data() + l);
+    if (m < points_wanted(model))
+      alone[l] = true;
+    else
+      points[l] = m;
   }
-  if (lanes > 0) {
+  const int most = std::max(std::max(points[0], points[1]), std::max(points[2], points[3]));
+  if (most > 0) {
+    // Every lane padded with zeros up to the longest.
+    for (int l = 0; l < 4; ++l)
+      for (int j = points[l]; j < most; ++j) p.u[4 * size_t(j) + size_t(l)] = p.v[4 * size_t(j) + size_t(l)] =
+          p.d[4 * size_t(j) + size_t(l)] = 0.0;
     HeightFit fit[4];
-    fit_height_lanes(model, u, v, d, points, lanes, fit);
-    for (int k = 0; k < lanes; ++k) {
-      const int i = vertex_of[k];
-      if (fit[k].ok)
-        out[i].curvature = principal_curvatures(fit[k], st[i].b1, st[i].b2, st[i].n);
-      else
-        alone[i] = true;
+    fit_height_lanes(model, p.u.data(), p.v.data(), p.d.data(), points, fit);
+    Vector3d b1[4], b2[4], n[4];
+    for (int l = 0; l < 4; ++l) {
+      const bool fitted = points[l] > 0 && fit[l].ok;
+      if (points[l] > 0 && !fit[l].ok) alone[l] = true;
+      if (!fitted) fit[l] = HeightFit{};  // a lane computed for nothing: zeros and a plain frame
+      b1[l] = fitted ? st[l].b1 : Vector3d::UnitX();
+      b2[l] = fitted ? st[l].b2 : Vector3d::UnitY();
+      n[l] = fitted ? st[l].n : Vector3d::UnitZ();
     }
+    PrincipalCurvatures pc[4];
+    principal_curvatures4(fit, b1, b2, n, pc);
+    for (int l = 0; l < count; ++l)
+      if (points[l] > 0 && !alone[l]) out[l].curvature = pc[l];
   }
   // What the first fit could not settle: fit_vertex from the start (its
   // first fit fails the same way, and it goes on from there).
-  for (int i = 0; i < count; ++i)
-    if (alone[i]) out[i] = fit_vertex(mesh, rings, first + i, method, extra_rings, s);
+  for (int l = 0; l < count; ++l)
+    if (alone[l]) out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
 }
 
 }  // namespace isoform

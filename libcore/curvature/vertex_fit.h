@@ -19,7 +19,7 @@ struct PlateletPoints {
 struct VertexFitScratch {
   RingScratch rings;
   PlateletPoints points;
-  PlateletPoints lanes[4];  // fit_vertices: one per vertex of a group
+  PlateletPoints lanes;  // fit_vertices: a group's four platelets side by side (fit_height_lanes)
 };
 
 struct VertexFitResult {

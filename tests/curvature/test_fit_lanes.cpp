@@ -4,6 +4,7 @@
 // boundaries, widened and lowered vertices.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -63,20 +64,20 @@ TEST(FitLanes, SameBitsAsOneAtATime) {
       const int lanes = 1 + round % 4;
       PointSet sets[4];
       for (int l = 0; l < lanes; ++l) sets[l] = point_set(rng, round % 7 == l ? 1 + round % 3 : 0);
-      const double* u[4] = {};
-      const double* v[4] = {};
-      const double* d[4] = {};
-      int count[4] = {0, 0, 0, 0};
-      for (int l = 0; l < lanes; ++l) {
-        u[l] = sets[l].u.data();
-        v[l] = sets[l].v.data();
-        d[l] = sets[l].d.data();
-        count[l] = sets[l].count();
-      }
+      // Side by side: point j of set l at 4 j + l, zeros beyond a set's end.
+      int count[4] = {0, 0, 0, 0}, most = 0;
+      for (int l = 0; l < lanes; ++l) most = std::max(most, count[l] = sets[l].count());
+      std::vector<double> u(4 * size_t(most), 0.0), v(u), d(u);
+      for (int l = 0; l < lanes; ++l)
+        for (int j = 0; j < count[l]; ++j) {
+          u[4 * size_t(j) + size_t(l)] = sets[l].u[size_t(j)];
+          v[4 * size_t(j) + size_t(l)] = sets[l].v[size_t(j)];
+          d[4 * size_t(j) + size_t(l)] = sets[l].d[size_t(j)];
+        }
       HeightFit out[4];
-      fit_height_lanes(model, u, v, d, count, lanes, out);
+      fit_height_lanes(model, u.data(), v.data(), d.data(), count, out);
       for (int l = 0; l < lanes; ++l) {
-        const HeightFit one = fit_height(model, u[l], v[l], d[l], count[l]);
+        const HeightFit one = fit_height(model, sets[l].u.data(), sets[l].v.data(), sets[l].d.data(), count[l]);
         EXPECT_TRUE(same_bits(one, out[l])) << "model " << int(model) << " round " << round << " lane " << l;
         (one.ok ? fitted : refused) += 1;
       }
