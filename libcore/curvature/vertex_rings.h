@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "../mesh.h"
@@ -18,8 +19,8 @@ class VertexRings {
 
   size_t vertex_count() const { return start_.size() - 1; }
   // The one-ring of v without v itself, in the order its triangles meet it.
-  const int32_t* ring_begin(int32_t v) const { return ring_.data() + start_[size_t(v)]; }
-  const int32_t* ring_end(int32_t v) const { return ring_.data() + start_[size_t(v) + 1]; }
+  const int32_t* ring_begin(int32_t v) const { return ring_.get() + start_[size_t(v)]; }
+  const int32_t* ring_end(int32_t v) const { return ring_.get() + start_[size_t(v) + 1]; }
   size_t valence(int32_t v) const { return size_t(start_[size_t(v) + 1] - start_[size_t(v)]); }
   // True where v lies on an edge that only one triangle uses.
   bool on_boundary(int32_t v) const { return boundary_[size_t(v)] != 0; }
@@ -28,8 +29,13 @@ class VertexRings {
   bool nonmanifold(int32_t v) const { return nonmanifold_[size_t(v)] != 0; }
 
  private:
+  template <class Offset>
+  void build(const Mesh& mesh);
+  void grow(size_t wanted);  // room for at least `wanted` ring entries, the entries kept
+
   std::vector<int64_t> start_;
-  std::vector<int32_t> ring_;
+  std::unique_ptr<int32_t[]> ring_;  // the rings, one after another; capacity_ entries
+  size_t capacity_ = 0;
   std::vector<uint8_t> boundary_;
   std::vector<uint8_t> nonmanifold_;
 };
