@@ -53,6 +53,16 @@ void percentiles(std::vector<float>& v, double p, double q, double* at_p, double
 
 bool usable(uint8_t flags) { return !(flags & (kCurvatureIsolated | kCurvatureFailed)); }
 
+// std::lround(255 c) for c in [0, 1] (the maps' channels), without the
+// library call: for x >= 0, x - trunc(x) is exact, so the comparison with
+// one half rounds halves away from zero as lround does.
+uint8_t channel(double c) {
+  const double x = 255.0 * c;
+  if (!(x >= 0.0)) return 0;
+  const int whole = int(x);
+  return uint8_t(x - double(whole) >= 0.5 ? whole + 1 : whole);
+}
+
 }  // namespace
 
 const std::vector<float>& curvature_values(const VertexCurvature& c, CurvatureQuantity q) {
@@ -98,9 +108,9 @@ void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, doub
     Rgb rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
     if (!usable(c.flags[v])) rgb = {0.5, 0.5, 0.5};
     uint8_t* out = &colors[4 * v];
-    out[0] = uint8_t(std::lround(255 * rgb.r));
-    out[1] = uint8_t(std::lround(255 * rgb.g));
-    out[2] = uint8_t(std::lround(255 * rgb.b));
+    out[0] = channel(rgb.r);
+    out[1] = channel(rgb.g);
+    out[2] = channel(rgb.b);
     out[3] = 255;
   }
 }
