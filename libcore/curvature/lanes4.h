@@ -19,6 +19,11 @@ typedef int64_t Mask4 __attribute__((vector_size(32)));  // a comparison's resul
 
 #define ISOFORM_LANES_INLINE inline __attribute__((always_inline))
 
+// Four 3-vectors, one per lane.
+struct Vec3Lanes {
+  Lanes4 x, y, z;
+};
+
 ISOFORM_LANES_INLINE Lanes4 splat4(double x) { return Lanes4{x, x, x, x}; }
 
 // Lane-wise: c ? a : b.

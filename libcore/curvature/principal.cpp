@@ -14,11 +14,6 @@ PrincipalCurvatures principal_curvatures(const HeightFit& f, const Eigen::Vector
 
 namespace {
 
-ISOFORM_LANES_INLINE Vec3Lanes lanes_of(const Eigen::Vector3d (&a)[4]) {
-  return {Lanes4{a[0](0), a[1](0), a[2](0), a[3](0)}, Lanes4{a[0](1), a[1](1), a[2](1), a[3](1)},
-          Lanes4{a[0](2), a[1](2), a[2](2), a[3](2)}};
-}
-
 ISOFORM_LANES_INLINE void principal4_body(const HeightFit (&f)[4], const Eigen::Vector3d (&b1)[4],
                                           const Eigen::Vector3d (&b2)[4], const Eigen::Vector3d (&n)[4],
                                           PrincipalCurvatures (&out)[4]) {
@@ -26,7 +21,7 @@ ISOFORM_LANES_INLINE void principal4_body(const HeightFit (&f)[4], const Eigen::
                               Lanes4{f[0].fuu, f[1].fuu, f[2].fuu, f[3].fuu},
                               Lanes4{f[0].fuv, f[1].fuv, f[2].fuv, f[3].fuv},
                               Lanes4{f[0].fvv, f[1].fvv, f[2].fvv, f[3].fvv}};
-  const PrincipalLanes p = principal_curvatures_lanes(fit, lanes_of(b1), lanes_of(b2), lanes_of(n));
+  const PrincipalLanes p = principal_curvatures_lanes(fit, vec3_lanes(b1), vec3_lanes(b2), vec3_lanes(n));
   for (int l = 0; l < 4; ++l) out[l] = principal_of_lane(p, l);
 }
 

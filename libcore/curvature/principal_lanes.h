@@ -10,10 +10,6 @@
 
 namespace isoform {
 
-struct Vec3Lanes {
-  Lanes4 x, y, z;
-};
-
 struct HeightFitLanes {
   Lanes4 fu, fv, fuu, fuv, fvv;
 };
@@ -68,6 +64,12 @@ ISOFORM_LANES_INLINE PrincipalLanes principal_curvatures_lanes(const HeightFitLa
   pc.d1 = normalized({e0 * xu.x + e1 * xv.x, e0 * xu.y + e1 * xv.y, e0 * xu.z + e1 * xv.z});
   pc.d2 = normalized(cross(pc.normal, pc.d1));
   return pc;
+}
+
+// Four Eigen vectors, one per lane.
+ISOFORM_LANES_INLINE Vec3Lanes vec3_lanes(const Eigen::Vector3d (&a)[4]) {
+  return {Lanes4{a[0](0), a[1](0), a[2](0), a[3](0)}, Lanes4{a[0](1), a[1](1), a[2](1), a[3](1)},
+          Lanes4{a[0](2), a[1](2), a[2](2), a[3](2)}};
 }
 
 // Lane l of p as principal_curvatures gives it.

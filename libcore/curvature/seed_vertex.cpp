@@ -165,42 +165,6 @@ ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const
   out.fvv = splat4(2.0) * c[2] / s2;
 }
 
-// Local coordinates and heights of the lanes' one-rings, point j of lane l
-// in lane l of u[j], v[j], d[j], the lanes with fewer points padded with
-// zeros. A lane where a neighbour coincides with its vertex (which
-// ring_coordinates would leave out) is marked in `coincide`.
-template <class Real>
-ISOFORM_LANES_INLINE int ring_lanes(const Real* points, const int32_t (&vertex)[4], const int32_t* const (&ring)[4],
-               const int (&valence)[4], const Vec3Lanes& b1, const Vec3Lanes& b2, const Vec3Lanes& n, Lanes4* u,
-               Lanes4* v, Lanes4* d, bool (&coincide)[4]) {
-  // Vectors are built whole from scalars in registers (not written lane by
-  // lane through memory, which stalls the vector read that follows).
-  const Real *q0 = points + 3 * size_t(vertex[0]), *q1 = points + 3 * size_t(vertex[1]),
-             *q2 = points + 3 * size_t(vertex[2]), *q3 = points + 3 * size_t(vertex[3]);
-  const Lanes4 ox = {double(q0[0]), double(q1[0]), double(q2[0]), double(q3[0])};
-  const Lanes4 oy = {double(q0[1]), double(q1[1]), double(q2[1]), double(q3[1])};
-  const Lanes4 oz = {double(q0[2]), double(q1[2]), double(q2[2]), double(q3[2])};
-  const int most = std::max(std::max(valence[0], valence[1]), std::max(valence[2], valence[3]));
-  const Lanes4 zero = splat4(0.0);
-  Mask4 any_same = {0, 0, 0, 0};
-  for (int j = 0; j < most; ++j) {
-    const bool h0 = j < valence[0], h1 = j < valence[1], h2 = j < valence[2], h3 = j < valence[3];
-    const Mask4 here = {-int64_t(h0), -int64_t(h1), -int64_t(h2), -int64_t(h3)};
-    const Real *p0 = h0 ? points + 3 * size_t(ring[0][j]) : q0, *p1 = h1 ? points + 3 * size_t(ring[1][j]) : q1,
-               *p2 = h2 ? points + 3 * size_t(ring[2][j]) : q2, *p3 = h3 ? points + 3 * size_t(ring[3][j]) : q3;
-    const Lanes4 x = Lanes4{double(p0[0]), double(p1[0]), double(p2[0]), double(p3[0])} - ox;
-    const Lanes4 y = Lanes4{double(p0[1]), double(p1[1]), double(p2[1]), double(p3[1])} - oy;
-    const Lanes4 z = Lanes4{double(p0[2]), double(p1[2]), double(p2[2]), double(p3[2])} - oz;
-    const Lanes4 uu = (x * b1.x + y * b1.y) + z * b1.z, vv = (x * b2.x + y * b2.y) + z * b2.z;
-    u[j] = select4(here, uu, zero);
-    v[j] = select4(here, vv, zero);
-    d[j] = select4(here, (x * n.x + y * n.y) + z * n.z, zero);
-    any_same |= here & (uu == zero) & (vv == zero);
-  }
-  for (int l = 0; l < 4; ++l) coincide[l] = any_same[l] != 0;
-  return most;
-}
-
 ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
                                              VertexFitScratch& s, VertexFitResult (&out)[4]) {
   // Lanes that the short path cannot settle at once (no usable normal,
@@ -239,8 +203,10 @@ ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings
   Lanes4 u[kMaxValence], v[kMaxValence], d[kMaxValence];
   bool coincide[4];
   const int most = mesh.precise_points.size() == mesh.points.size()
-                       ? ring_lanes(mesh.precise_points.data(), vertex, ring, valence, b1, b2, n, u, v, d, coincide)
-                       : ring_lanes(mesh.points.data(), vertex, ring, valence, b1, b2, n, u, v, d, coincide);
+                       ? ring_coordinates_lanes(mesh.precise_points.data(), vertex, ring, valence, b1, b2, n,
+                                                (double*)u, (double*)v, (double*)d, coincide)
+                       : ring_coordinates_lanes(mesh.points.data(), vertex, ring, valence, b1, b2, n, (double*)u,
+                                                (double*)v, (double*)d, coincide);
   HeightFitLanes fit;
   bool ok[4];
   seed_fit_lanes(u, v, d, most, fit, ok);

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "principal_lanes.h"
 #include "ring_coordinates.h"
+#include "vector_level.h"
 
 namespace isoform {
 namespace {
@@ -141,6 +143,43 @@ bool start_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, Curvatu
   return true;
 }
 
+// ring_coordinates_lanes on the mesh's points, in the frames (b1, b2, n) of
+// the four lanes; built for AVX too and chosen at run time (vector_level.h).
+ISOFORM_LANES_INLINE int coordinates_body(const Mesh& mesh, const int32_t (&vertex)[4],
+                                          const int32_t* const (&ring)[4], const int (&valence)[4],
+                                          const Vector3d (&b1)[4], const Vector3d (&b2)[4], const Vector3d (&n)[4],
+                                          PlateletPoints& p, bool (&coincide)[4]) {
+  const Vec3Lanes e1 = vec3_lanes(b1), e2 = vec3_lanes(b2), e3 = vec3_lanes(n);
+  if (mesh.precise_points.size() == mesh.points.size())
+    return ring_coordinates_lanes(mesh.precise_points.data(), vertex, ring, valence, e1, e2, e3, p.u.data(),
+                                  p.v.data(), p.d.data(), coincide);
+  return ring_coordinates_lanes(mesh.points.data(), vertex, ring, valence, e1, e2, e3, p.u.data(), p.v.data(),
+                                p.d.data(), coincide);
+}
+
+int coordinates_plain(const Mesh& mesh, const int32_t (&vertex)[4], const int32_t* const (&ring)[4],
+                      const int (&valence)[4], const Vector3d (&b1)[4], const Vector3d (&b2)[4],
+                      const Vector3d (&n)[4], PlateletPoints& p, bool (&coincide)[4]) {
+  return coordinates_body(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+}
+
+#ifdef ISOFORM_AVX_CLONE
+ISOFORM_AVX_TARGET int coordinates_avx(const Mesh& mesh, const int32_t (&vertex)[4], const int32_t* const (&ring)[4],
+                                       const int (&valence)[4], const Vector3d (&b1)[4], const Vector3d (&b2)[4],
+                                       const Vector3d (&n)[4], PlateletPoints& p, bool (&coincide)[4]) {
+  return coordinates_body(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+}
+#endif
+
+int coordinates_lanes(const Mesh& mesh, const int32_t (&vertex)[4], const int32_t* const (&ring)[4],
+                      const int (&valence)[4], const Vector3d (&b1)[4], const Vector3d (&b2)[4],
+                      const Vector3d (&n)[4], PlateletPoints& p, bool (&coincide)[4]) {
+#ifdef ISOFORM_AVX_CLONE
+  if (vector_level() > 0) return coordinates_avx(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+#endif
+  return coordinates_plain(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+}
+
 }  // namespace
 
 VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, CurvatureMethod method,
@@ -186,55 +225,86 @@ VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v
 void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
                   int extra_rings, VertexFitScratch& s, VertexFitResult (&out)[4]) {
   // Vertex first + l in lane l of the side-by-side fit: its platelet's
-  // points at 4 j + l of s.lanes (fit_height_lanes' layout).
+  // points at 4 j + l of s.lanes (fit_height_lanes' layout). Unused lanes
+  // get no points and a plain frame.
   Start st[4];
-  int points[4] = {0, 0, 0, 0};
+  int32_t vertex[4];
+  const int32_t* ring[4] = {};
+  int valence[4] = {0, 0, 0, 0}, points[4] = {0, 0, 0, 0};
   bool alone[4] = {false, false, false, false};
+  Vector3d b1[4], b2[4], n[4];
   const FitModel model = plan_of(method).model;
-  PlateletPoints& p = s.lanes;
-  for (int l = 0; l < count; ++l) {
-    const int32_t vertex = first + l;
+  const int wanted = points_wanted(model);
+  for (int l = 0; l < 4; ++l) {
+    vertex[l] = first + std::min(l, count - 1);
+    b1[l] = Vector3d::UnitX();
+    b2[l] = Vector3d::UnitY();
+    n[l] = Vector3d::UnitZ();
+    if (l >= count) continue;
     out[l] = VertexFitResult{};
-    if (!start_vertex(mesh, rings, vertex, method, extra_rings, s, out[l], st[l])) continue;
-    const size_t room = 4 * (s.rings.out.size() + 1);
-    if (p.u.size() < room) {
-      p.u.resize(room);
-      p.v.resize(room);
-      p.d.resize(room);
+    if (!start_vertex(mesh, rings, vertex[l], method, extra_rings, s, out[l], st[l])) continue;
+    // Fewer neighbours than the model wants: fewer points too.
+    if (s.rings.out.size() < size_t(wanted)) {
+      alone[l] = true;
+      continue;
     }
-    const int m = local_coordinates<4>(mesh, vertex, s.rings.out, st[l].b1, st[l].b2, st[l].n, p.u.data() + l,
-                                       p.v.data() + l, p.d.data() + l);
-    if (m < points_wanted(model))
+    s.lane_rings[l].assign(s.rings.out.begin(), s.rings.out.end());
+    ring[l] = s.lane_rings[l].data();
+    valence[l] = int(s.lane_rings[l].size());
+    b1[l] = st[l].b1;
+    b2[l] = st[l].b2;
+    n[l] = st[l].n;
+  }
+  const int widest = std::max(std::max(valence[0], valence[1]), std::max(valence[2], valence[3]));
+  if (widest == 0) {
+    for (int l = 0; l < count; ++l)
+      if (alone[l]) out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
+    return;
+  }
+  PlateletPoints& p = s.lanes;
+  const size_t room = 4 * (size_t(widest) + 1);
+  if (p.u.size() < room) {
+    p.u.resize(room);
+    p.v.resize(room);
+    p.d.resize(room);
+  }
+  bool coincide[4];
+  coordinates_lanes(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+  for (int l = 0; l < 4; ++l) {
+    if (valence[l] == 0) continue;
+    // A neighbour on the vertex: its lane again, one point after another,
+    // with that point left out.
+    const int m = coincide[l] ? local_coordinates<4>(mesh, vertex[l], s.lane_rings[l], b1[l], b2[l], n[l],
+                                                     p.u.data() + l, p.v.data() + l, p.d.data() + l)
+                              : valence[l];
+    if (m < wanted)
       alone[l] = true;
     else
       points[l] = m;
+    for (int j = points[l]; j < widest; ++j)
+      p.u[4 * size_t(j) + size_t(l)] = p.v[4 * size_t(j) + size_t(l)] = p.d[4 * size_t(j) + size_t(l)] = 0.0;
   }
-  const int most = std::max(std::max(points[0], points[1]), std::max(points[2], points[3]));
-  if (most > 0) {
-    // Every lane padded with zeros up to the longest.
-    for (int l = 0; l < 4; ++l)
-      for (int j = points[l]; j < most; ++j) p.u[4 * size_t(j) + size_t(l)] = p.v[4 * size_t(j) + size_t(l)] =
-          p.d[4 * size_t(j) + size_t(l)] = 0.0;
-    HeightFit fit[4];
-    fit_height_lanes(model, p.u.data(), p.v.data(), p.d.data(), points, fit);
-    Vector3d b1[4], b2[4], n[4];
-    for (int l = 0; l < 4; ++l) {
-      const bool fitted = points[l] > 0 && fit[l].ok;
-      if (points[l] > 0 && !fit[l].ok) alone[l] = true;
-      if (!fitted) fit[l] = HeightFit{};  // a lane computed for nothing: zeros and a plain frame
-      b1[l] = fitted ? st[l].b1 : Vector3d::UnitX();
-      b2[l] = fitted ? st[l].b2 : Vector3d::UnitY();
-      n[l] = fitted ? st[l].n : Vector3d::UnitZ();
+  HeightFit fit[4];
+  fit_height_lanes(model, p.u.data(), p.v.data(), p.d.data(), points, fit);
+  for (int l = 0; l < 4; ++l) {
+    if (points[l] > 0 && !fit[l].ok) alone[l] = true;
+    if (points[l] == 0 || !fit[l].ok) {  // a lane computed for nothing: zeros and a plain frame
+      fit[l] = HeightFit{};
+      b1[l] = Vector3d::UnitX();
+      b2[l] = Vector3d::UnitY();
+      n[l] = Vector3d::UnitZ();
     }
-    PrincipalCurvatures pc[4];
-    principal_curvatures4(fit, b1, b2, n, pc);
-    for (int l = 0; l < count; ++l)
-      if (points[l] > 0 && !alone[l]) out[l].curvature = pc[l];
   }
-  // What the first fit could not settle: fit_vertex from the start (its
-  // first fit fails the same way, and it goes on from there).
-  for (int l = 0; l < count; ++l)
-    if (alone[l]) out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
+  PrincipalCurvatures pc[4];
+  principal_curvatures4(fit, b1, b2, n, pc);
+  for (int l = 0; l < count; ++l) {
+    if (alone[l])
+      // What the first fit could not settle: fit_vertex from the start
+      // (its first fit fails the same way, and it goes on from there).
+      out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
+    else if (points[l] > 0)
+      out[l].curvature = pc[l];
+  }
 }
 
 }  // namespace isoform
