@@ -175,6 +175,7 @@ void VertexRings::build(const Mesh& mesh) {
         !(boundary_edges == 2 && distinct == tris_at + 1))
       nonmanifold_[v] = 1;
     start_[v + 1] = int64_t(size);
+    max_valence_ = std::max(max_valence_, distinct);
   }
 }
 
@@ -208,25 +209,38 @@ void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s
   mark[size_t(v)] = stamp;
   // Ring r + 1 is what the vertices of ring r (out[from, to)) reach first.
   // Each neighbour is written at the end and kept only when new (no branch
-  // on whether it is: which is as good as random).
+  // on whether it is: which is as good as random). Room for a whole ring's
+  // candidates (its vertices' one-rings) is made before it: as many as the
+  // largest valence each, or, where that bound is large, their count.
   size_t size = 0;
+  int32_t* out = nullptr;
+  auto make_room = [&](size_t more) {
+    if (s.out.size() < size + more) s.out.resize(2 * (size + more));
+    out = s.out.data();
+  };
   auto meet_all = [&](const int32_t* w, const int32_t* end) {
-    if (s.out.size() < size + size_t(end - w)) s.out.resize(2 * (size + size_t(end - w)));
-    int32_t* out = s.out.data();
     for (; w != end; ++w) {
-      const bool fresh = mark[size_t(*w)] != stamp;
-      mark[size_t(*w)] = stamp;
-      out[size] = *w;
+      const int32_t x = *w;
+      const bool fresh = mark[size_t(x)] != stamp;
+      mark[size_t(x)] = stamp;
+      out[size] = x;
       size += fresh;
     }
   };
+  make_room(rings.valence(v));
   meet_all(rings.ring_begin(v), rings.ring_end(v));
   size_t from = 0;
   for (int r = 1; r < count; ++r) {
     const size_t to = size;
     if (to == from) break;
+    size_t candidates = (to - from) * rings.max_valence();
+    if (candidates > (size_t(1) << 16)) {
+      candidates = 0;
+      for (size_t i = from; i < to; ++i) candidates += rings.valence(out[i]);
+    }
+    make_room(candidates);
     for (size_t i = from; i < to; ++i) {
-      const int32_t u = s.out[i];
+      const int32_t u = out[i];
       meet_all(rings.ring_begin(u), rings.ring_end(u));
     }
     from = to;

@@ -22,6 +22,7 @@ class VertexRings {
   const int32_t* ring_begin(int32_t v) const { return ring_.get() + start_[size_t(v)]; }
   const int32_t* ring_end(int32_t v) const { return ring_.get() + start_[size_t(v) + 1]; }
   size_t valence(int32_t v) const { return size_t(start_[size_t(v) + 1] - start_[size_t(v)]); }
+  size_t max_valence() const { return max_valence_; }
   // True where v lies on an edge that only one triangle uses.
   bool on_boundary(int32_t v) const { return boundary_[size_t(v)] != 0; }
   // True where v's triangles do not form a single fan (an edge with three or
@@ -36,6 +37,7 @@ class VertexRings {
   std::vector<int64_t> start_;
   std::unique_ptr<int32_t[]> ring_;  // the rings, one after another; capacity_ entries
   size_t capacity_ = 0;
+  size_t max_valence_ = 0;
   std::vector<uint8_t> boundary_;
   std::vector<uint8_t> nonmanifold_;
 };
