@@ -21,6 +21,22 @@ using Eigen::Vector3d;
 // Rings longer than this go the general way (no fixed-size buffer).
 constexpr size_t kMaxValence = 32;
 
+// Adds one point (x, y scaled, height h) to the seed fit's five moments
+// u^4, u^3 v, u^2 v^2, u v^3, v^4 and its sums d u^2, d u v, d v^2, as
+// fit_height adds it; T is double for one point set, Lanes4 for four.
+template <class T>
+ISOFORM_LANES_INLINE void add_seed_point(T x, T y, T h, T (&moment)[5], T (&rhs)[3]) {
+  const T x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
+  moment[0] += x3 * x;
+  moment[1] += x3 * y;
+  moment[2] += x2 * y2;
+  moment[3] += x * y3;
+  moment[4] += y3 * y;
+  rhs[0] += h * x2;
+  rhs[1] += h * (x * y);
+  rhs[2] += h * y2;
+}
+
 // fit_height(FitModel::SeedQuadratic, ...) for count >= 3 points, with
 // fit_height's arithmetic in its order: the scale, the five moments u^4 ..
 // v^4 and three sums d u^2, d u v, d v^2, the 3 x 3 LDLT, the
@@ -34,18 +50,7 @@ bool seed_fit(const double* u, const double* v, const double* d, int count, Heig
   // One sum per moment, over the points in their order, as fit_height
   // sums them.
   double moment[5] = {0, 0, 0, 0, 0}, rhs[3] = {0, 0, 0};
-  for (int j = 0; j < count; ++j) {
-    const double x = u[j] * inv, y = v[j] * inv, h = d[j];
-    const double x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
-    moment[0] += x3 * x;
-    moment[1] += x3 * y;
-    moment[2] += x2 * y2;
-    moment[3] += x * y3;
-    moment[4] += y3 * y;
-    rhs[0] += h * x2;
-    rhs[1] += h * (x * y);
-    rhs[2] += h * y2;
-  }
+  for (int j = 0; j < count; ++j) add_seed_point(u[j] * inv, v[j] * inv, d[j], moment, rhs);
   // Terms u^2, u v, v^2: entry (r, c) is the moment of v-power r + c.
   static constexpr int at[3][3] = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
   SmallLdlt<3> ldlt;
@@ -122,26 +127,15 @@ ISOFORM_LANES_INLINE void frame_lanes(const Vec3Lanes& n, Vec3Lanes& b1, Vec3Lan
 // u[j][l]; lanes with fewer points padded with zeros, which add exactly 0
 // to every sum and leave the largest radius as it is). ok[l] false where
 // seed_fit would return false for lane l.
-ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const Lanes4* d, int most, HeightFitLanes& out,
-                    bool (&ok)[4]) {
+ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const Lanes4* d, int most,
+                                          HeightFitLanes& out, bool (&ok)[4]) {
   Lanes4 r2 = splat4(0.0);
   for (int j = 0; j < most; ++j) r2 = max4(r2, u[j] * u[j] + v[j] * v[j]);
   const Lanes4 scale = sqrt4(r2);
   const Mask4 scaled = (scale > splat4(0.0)) & finite4(scale);
   const Lanes4 inv = splat4(1.0) / scale;
   Lanes4 moment[5] = {}, rhs[3] = {};
-  for (int j = 0; j < most; ++j) {
-    const Lanes4 x = u[j] * inv, y = v[j] * inv, h = d[j];
-    const Lanes4 x2 = x * x, y2 = y * y, x3 = x2 * x, y3 = y2 * y;
-    moment[0] += x3 * x;
-    moment[1] += x3 * y;
-    moment[2] += x2 * y2;
-    moment[3] += x * y3;
-    moment[4] += y3 * y;
-    rhs[0] += h * x2;
-    rhs[1] += h * (x * y);
-    rhs[2] += h * y2;
-  }
+  for (int j = 0; j < most; ++j) add_seed_point(u[j] * inv, v[j] * inv, d[j], moment, rhs);
   static constexpr int at[3][3] = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
   SmallLdltLanes<3> ldlt;
   bool factored[4];
