@@ -4,9 +4,6 @@
 #include <algorithm>
 #include <memory>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace isoform {
 
@@ -32,11 +29,7 @@ bool degenerate(const int32_t* t) { return t[0] == t[1] || t[1] == t[2] || t[0] 
 // vertex left out), in triangle order, one vertex's after another: a count,
 // a prefix sum, and a pass that writes each vertex's pairs, moving its
 // offset to the next vertex's (offsets end up shifted by one vertex).
-// Offset is uint32_t where the pairs allow it, else uint64_t. The array has
-// kSpare entries to spare at its end (read, never used, by the table's
-// vector compares).
-constexpr size_t kSpare = 16;
-
+// Offset is uint32_t where the pairs allow it, else uint64_t.
 template <class Offset>
 std::unique_ptr<int32_t[]> corner_pairs(const Mesh& mesh, std::unique_ptr<Offset[]>& at) {
   const size_t n = mesh.vertex_count(), m = mesh.triangle_count();
@@ -48,8 +41,7 @@ std::unique_ptr<int32_t[]> corner_pairs(const Mesh& mesh, std::unique_ptr<Offset
     for (int i = 0; i < 3; ++i) ++at[size_t(tri[i]) + 1];
   }
   for (size_t v = 0; v < n; ++v) at[v + 1] += at[v];
-  std::unique_ptr<int32_t[]> pairs(new int32_t[2 * size_t(at[n]) + kSpare]);
-  std::fill(pairs.get() + 2 * size_t(at[n]), pairs.get() + 2 * size_t(at[n]) + kSpare, -1);
+  std::unique_ptr<int32_t[]> pairs(new int32_t[2 * size_t(at[n])]);
   for (size_t t = 0; t < m; ++t) {
     const int32_t* tri = tris + 3 * t;
     if (degenerate(tri)) continue;
@@ -59,42 +51,6 @@ std::unique_ptr<int32_t[]> corner_pairs(const Mesh& mesh, std::unique_ptr<Offset
     }
   }
   return pairs;
-}
-
-// The distinct entries of e[0 .. count) (count at most 4 V) in the order of
-// their first appearance into out, returning how many; boundary gets how
-// many were met once, and the result says whether one was met three times
-// or more. e has 4 V entries readable; all compares are against the V
-// vectors of entries, held in registers, without branches on the data.
-template <int V>
-inline int distinct_entries(const int32_t* e, int count, int32_t* out, int64_t& boundary, bool& thrice) {
-  const unsigned valid = (1u << count) - 1;
-#if defined(__SSE2__)
-  __m128i vec[V];
-  for (int k = 0; k < V; ++k) vec[k] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(e + 4 * k));
-#endif
-  int size = 0;
-  unsigned many = 0;
-  for (int i = 0; i < count; ++i) {
-#if defined(__SSE2__)
-    const __m128i x = _mm_set1_epi32(e[i]);
-    unsigned same = 0;
-    for (int k = 0; k < V; ++k)
-      same |= unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(vec[k], x)))) << (4 * k);
-    same &= valid;
-#else
-    unsigned same = 0;
-    for (int j = 0; j < count; ++j) same |= unsigned(e[j] == e[i]) << j;
-#endif
-    const bool first_meeting = (same & ((1u << i) - 1)) == 0;
-    const unsigned but_one = same & (same - 1), but_two = but_one & (but_one - 1);
-    out[size] = e[i];
-    size += first_meeting;
-    boundary += first_meeting & (but_one == 0);   // met once
-    many |= unsigned(first_meeting & (but_two != 0));  // three times or more
-  }
-  thrice = many != 0;
-  return size;
 }
 
 }  // namespace
@@ -112,20 +68,17 @@ void VertexRings::build(const Mesh& mesh) {
   const size_t n = mesh.vertex_count();
   std::unique_ptr<Offset[]> at;
   const std::unique_ptr<int32_t[]> pairs = corner_pairs(mesh, at);
-  // Vertex v's pairs are [at[v - 1], at[v]) now (at[-1] = 0). Vertices with
-  // at most 8 triangles (nearly all) compare their entries all against all
-  // (distinct_entries): an entry is a neighbour's first meeting where no
-  // earlier entry equals it, and the number of equal entries is how often
-  // the neighbour is met. Vertices with more triangles count in
-  // per-vertex stamps instead (seen[w] == v + 1: w already met around v).
+  // Vertex v's pairs are [at[v - 1], at[v]) now (at[-1] = 0). Around v
+  // each neighbour is counted in per-vertex stamps (seen[w] == v + 1: w
+  // already met around v; uses[w]: how often).
   start_.resize(n + 1);
   start_[0] = 0;
   boundary_.assign(n, 0);
   nonmanifold_.assign(n, 0);
   capacity_ = size_t(at[n]) + n;
   ring_.reset(new int32_t[capacity_]);
-  std::vector<int32_t> seen;
-  std::vector<uint8_t> uses;
+  std::vector<int32_t> seen(n, 0);
+  std::vector<uint8_t> uses(n, 0);
   size_t size = 0;
   for (size_t v = 0; v < n; ++v) {
     const int32_t tag = int32_t(v) + 1;
@@ -135,38 +88,25 @@ void VertexRings::build(const Mesh& mesh) {
     int64_t boundary_edges = 0;
     if (size + 2 * tris_at > capacity_) grow(size + 2 * tris_at);
     int32_t* out = ring_.get();
-    if (2 * tris_at <= 16) {
-      const int count = int(2 * tris_at);
-      bool thrice = false;
-      switch ((count + 3) / 4) {
-        case 0: break;
-        case 1: size += size_t(distinct_entries<1>(e, count, out + size, boundary_edges, thrice)); break;
-        case 2: size += size_t(distinct_entries<2>(e, count, out + size, boundary_edges, thrice)); break;
-        case 3: size += size_t(distinct_entries<3>(e, count, out + size, boundary_edges, thrice)); break;
-        default: size += size_t(distinct_entries<4>(e, count, out + size, boundary_edges, thrice)); break;
-      }
-      nonmanifold_[v] = thrice;
-    } else {
-      if (seen.empty()) {
-        seen.assign(n, 0);
-        uses.assign(n, 0);
-      }
-      for (size_t k = 0; k < 2 * tris_at; ++k) {
-        const int32_t w = e[k];
-        if (seen[size_t(w)] != tag) {
-          seen[size_t(w)] = tag;
-          uses[size_t(w)] = 1;
-          out[size++] = w;
-        } else if (uses[size_t(w)] < 255) {
-          ++uses[size_t(w)];
-        }
-      }
-      for (size_t k = first; k != size; ++k) {
-        const uint8_t u = uses[size_t(out[k])];
-        boundary_edges += u == 1;
-        if (u > 2) nonmanifold_[v] = 1;
-      }
+    // Each entry is written at the end and kept only where new; its count
+    // starts at 1 or goes up by one (to at most 255), without branches on
+    // the data.
+    for (size_t k = 0; k < 2 * tris_at; ++k) {
+      const int32_t w = e[k];
+      const bool fresh = seen[size_t(w)] != tag;
+      seen[size_t(w)] = tag;
+      const uint8_t u = uses[size_t(w)];
+      uses[size_t(w)] = fresh ? uint8_t(1) : uint8_t(u + (u < 255));
+      out[size] = w;
+      size += fresh;
     }
+    bool thrice = false;
+    for (size_t k = first; k != size; ++k) {
+      const uint8_t u = uses[size_t(out[k])];
+      boundary_edges += u == 1;
+      thrice |= u > 2;
+    }
+    nonmanifold_[v] = thrice;
     const size_t distinct = size - first;
     // A single closed fan has as many neighbours as triangles; a single open
     // fan one more, with two boundary edges.

@@ -1,6 +1,6 @@
 // The one-ring table (VertexRings) on hand-built fans, against the order and
-// flags worked out by hand, on both of its paths (up to 8 triangles at a
-// vertex and more); and the seed's short path (fit_seed_vertex) against
+// flags worked out by hand, with up to 8 triangles at a vertex and more;
+// and the seed's short path (fit_seed_vertex) against
 // fit_vertex, and its four-lane form against it, bit for bit.
 #include <gtest/gtest.h>
 
