@@ -139,8 +139,15 @@ int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
     w[a] = m[a][0] * index_pos[0] + m[a][1] * index_pos[1] + m[a][2] * index_pos[2] + m[a][3];
     n[a] = normal_sign_ * (cofactor_[a][0] * grad[0] + cofactor_[a][1] * grad[1] + cofactor_[a][2] * grad[2]);
   }
+  return push_vertex(w.data(), n.data());
+}
+
+int32_t BrickContourer::push_vertex(const double* point, const double* grad) {
+  // Six single appends: each an inline capacity check, where a range insert
+  // is an out-of-line call per vertex.
   std::vector<float>& v = out_->vertices;
-  v.insert(v.end(), {float(w[0]), float(w[1]), float(w[2]), float(n[0]), float(n[1]), float(n[2])});
+  for (int a = 0; a < 3; ++a) v.push_back(float(point[a]));
+  for (int a = 0; a < 3; ++a) v.push_back(float(grad[a]));
   out_->on_seam.push_back(0);
   return int32_t(v.size() / 6 - 1);
 }
@@ -371,10 +378,7 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
       p[a] += out_->vertices[6 * size_t(ids[m]) + size_t(a)] / n;
       q[a] += out_->vertices[6 * size_t(ids[m]) + 3 + size_t(a)] / n;
     }
-  std::vector<float>& v = out_->vertices;
-  v.insert(v.end(), {float(p[0]), float(p[1]), float(p[2]), float(q[0]), float(q[1]), float(q[2])});
-  out_->on_seam.push_back(0);
-  return int32_t(v.size() / 6 - 1);
+  return push_vertex(p, q);
 }
 
 namespace {
