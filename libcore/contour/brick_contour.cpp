@@ -139,8 +139,15 @@ int32_t BrickContourer::add_vertex(const Vec3d& index_pos, const Vec3d& grad) {
     w[a] = m[a][0] * index_pos[0] + m[a][1] * index_pos[1] + m[a][2] * index_pos[2] + m[a][3];
     n[a] = normal_sign_ * (cofactor_[a][0] * grad[0] + cofactor_[a][1] * grad[1] + cofactor_[a][2] * grad[2]);
   }
+  return push_vertex(w.data(), n.data());
+}
+
+int32_t BrickContourer::push_vertex(const double* point, const double* grad) {
+  // Six single appends: each an inline capacity check, where a range insert
+  // is an out-of-line call per vertex.
   std::vector<float>& v = out_->vertices;
-  v.insert(v.end(), {float(w[0]), float(w[1]), float(w[2]), float(n[0]), float(n[1]), float(n[2])});
+  for (int a = 0; a < 3; ++a) v.push_back(float(point[a]));
+  for (int a = 0; a < 3; ++a) v.push_back(float(grad[a]));
   out_->on_seam.push_back(0);
   return int32_t(v.size() / 6 - 1);
 }
@@ -371,18 +378,13 @@ int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
       p[a] += out_->vertices[6 * size_t(ids[m]) + size_t(a)] / n;
       q[a] += out_->vertices[6 * size_t(ids[m]) + 3 + size_t(a)] / n;
     }
-  std::vector<float>& v = out_->vertices;
-  v.insert(v.end(), {float(p[0]), float(p[1]), float(p[2]), float(q[0]), float(q[1]), float(q[2])});
-  out_->on_seam.push_back(0);
-  return int32_t(v.size() / 6 - 1);
+  return push_vertex(p, q);
 }
 
 namespace {
 
-// Twice the squared area of the triangle (p, q, r), from float points.
-double area2(const double* p, const double* q, const double* r) {
-  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-  const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+// Four times the squared area of the triangle (p, p + u, p + w).
+double area2(const double* u, const double* w) {
   const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
   return x * x + y * y + z * z;
 }
@@ -405,9 +407,18 @@ void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
     for (int apex = 0; apex < n; ++apex) {
       // The apex's smallest triangle so far; once it is no larger than the
       // best apex's, this apex cannot win.
+      // Triangle (apex, m, m + 1) from the sides to m and m + 1; each side
+      // serves two triangles and is computed once (the same differences).
+      const double* o = p[apex];
       double smallest = HUGE_VAL;
-      for (int m = apex + 1; m + 1 < apex + n && smallest > best_area; ++m)
-        smallest = std::min(smallest, area2(p[apex], p[m], p[m + 1]));
+      double u[3] = {p[apex + 1][0] - o[0], p[apex + 1][1] - o[1], p[apex + 1][2] - o[2]};
+      for (int m = apex + 1; m + 1 < apex + n && smallest > best_area; ++m) {
+        const double w[3] = {p[m + 1][0] - o[0], p[m + 1][1] - o[1], p[m + 1][2] - o[2]};
+        smallest = std::min(smallest, area2(u, w));
+        u[0] = w[0];
+        u[1] = w[1];
+        u[2] = w[2];
+      }
       if (smallest > best_area) {
         best_area = smallest;
         best = apex;

@@ -74,6 +74,8 @@ class BrickContourer {
   const Vec3d& gradient(int i, int j, int k);
   int32_t edge_vertex(int ci, int cj, int ck, int p, int q);
   int32_t add_vertex(const Vec3d& index_pos, const Vec3d& grad);
+  // Appends a vertex (world point, world gradient) as floats; its index.
+  int32_t push_vertex(const double* point, const double* grad);
   int32_t add_centroid(const int32_t* ids, int n);
   void add_fan(const int32_t* ids, int n, bool link);
   void count_sides_on_seams(const int32_t* ids, int n);

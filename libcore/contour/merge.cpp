@@ -221,12 +221,16 @@ void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTa
       mesh.normals[3 * size_t(f) + a] = len > 0 ? sign * float(g[a] / len) : 0.0f;
     }
   }
-  const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
-  const size_t t0 = o.triangle[b];
-  for (size_t t = 0; t < bm.triangle_count; ++t) {
-    const int32_t* tri = &tris[3 * t];
+  // Oriented as written: reversed, corners 1 and 2 swap places. Whether a
+  // triangle is degenerate does not depend on the order of its corners.
+  const int second = orient.reverse ? 2 : 1, third = 3 - second;
+  int32_t* out = &mesh.triangles[3 * o.triangle[b]];
+  for (size_t t = 0; t < bm.triangle_count; ++t, out += 3) {
+    const int32_t* tri = &bm.triangles[3 * t];
     s.counts.degenerate += degenerate(tri, bm.vertices);
-    for (int m = 0; m < 3; ++m) mesh.triangles[3 * (t0 + t) + size_t(m)] = fin[tri[m]];
+    out[0] = fin[tri[0]];
+    out[1] = fin[tri[second]];
+    out[2] = fin[tri[third]];
   }
 }
 

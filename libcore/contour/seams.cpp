@@ -37,31 +37,63 @@ void match_group(const SeamEdge* g, size_t n, std::vector<int32_t>& neighbours, 
   }
 }
 
+uint64_t smaller_vertex(const SeamEdge& e) { return e.key >> 32; }
+
+// A stable insertion sort by key: the run of one smaller vertex holds a
+// handful of edges (those of its few sides, once or twice each).
+void sort_by_key(SeamEdge* run, size_t n) {
+  for (size_t i = 1; i < n; ++i) {
+    const SeamEdge e = run[i];
+    size_t j = i;
+    for (; j > 0 && run[j - 1].key > e.key; --j) run[j] = run[j - 1];
+    run[j] = e;
+  }
+}
+
+// Where the pieces of about kPiece edges begin, each moved up to the start
+// of a run of one smaller vertex; n closes the last one.
+std::vector<size_t> run_starts(const SeamEdge* seams, size_t n) {
+  constexpr size_t kPiece = 4096;
+  std::vector<size_t> starts;
+  for (size_t at = 0; at < n; at += kPiece) {
+    size_t i = at;
+    while (i > 0 && i < n && smaller_vertex(seams[i]) == smaller_vertex(seams[i - 1])) ++i;
+    starts.push_back(i);
+  }
+  starts.push_back(n);
+  return starts;
+}
+
 }  // namespace
 
 void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, std::vector<int32_t>& neighbours,
                  const std::vector<int32_t>& parts, TopologyCounts& counts,
                  std::vector<std::pair<int32_t, int32_t>>& links) {
   {
-    // Both vertices of a key are below vertex_count: sort by the two packed
-    // side by side. Stable, so equal keys keep their increasing edges, which
-    // is the order of (key, edge).
+    // By the smaller vertex only, half the passes of sorting by both; the
+    // few edges that share a smaller vertex are put in key order below.
+    // Stable, so equal keys keep their increasing edges, which is the order
+    // of (key, edge).
     const int vb = radix_bits_for(vertex_count > 0 ? uint64_t(vertex_count - 1) : 0);
     const std::unique_ptr<SeamEdge[]> buffer = fresh_array<SeamEdge>(n);
-    radix_sort(seams, buffer.get(), n, 2 * vb,
-               [vb](const SeamEdge& e) { return ((e.key >> 32) << vb) | (e.key & 0xFFFFFFFFu); });
+    radix_sort(seams, buffer.get(), n, vb, [](const SeamEdge& e) { return e.key >> 32; });
   }
+  // Pieces of the sorted edges that begin where a run of one smaller
+  // vertex begins, found before any run is reordered; each piece puts its
+  // runs in key order and matches their groups.
+  const std::vector<size_t> starts = run_starts(seams, n);
   tbb::enumerable_thread_specific<GroupScratch> scratch;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(size_t(0), starts.size() - 1, [&](size_t p) {
     GroupScratch& s = scratch.local();
-    // Each range handles the groups that start in it.
-    size_t i = r.begin();
-    while (i > 0 && i < r.end() && seams[i].key == seams[i - 1].key) ++i;
-    while (i < r.end()) {
-      size_t j = i + 1;
-      while (j < n && seams[j].key == seams[i].key) ++j;
-      match_group(&seams[i], j - i, neighbours, parts, s);
-      i = j;
+    for (size_t i = starts[p], end; i < starts[p + 1]; i = end) {
+      end = i + 1;
+      while (end < n && smaller_vertex(seams[end]) == smaller_vertex(seams[i])) ++end;
+      sort_by_key(seams + i, end - i);
+      for (size_t g = i, h; g < end; g = h) {
+        h = g + 1;
+        while (h < end && seams[h].key == seams[g].key) ++h;
+        match_group(&seams[g], h - g, neighbours, parts, s);
+      }
     }
   });
   for (GroupScratch& s : scratch) {

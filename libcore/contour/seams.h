@@ -14,7 +14,8 @@ namespace isoform {
 
 // Sorts the seam edges by key, then edge (seams must come with their edges
 // increasing, as merge.cpp writes them, and with the vertices of their keys
-// below vertex_count), and fills their neighbours as compute_neighbours
+// below vertex_count; a radix sort by the smaller vertex, then each run of
+// one smaller vertex in key order), and fills their neighbours as compute_neighbours
 // would: an edge held by exactly two triangles makes them neighbours (and
 // appends the pair of their parts to links, unless the parts are one or
 // the pair was the last one appended), one held by one is a boundary edge,
