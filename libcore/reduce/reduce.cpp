@@ -77,6 +77,8 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
 // the threads busy between two serial stretches, few enough that a removal
 // rarely meets an earlier one of its batch.
 constexpr size_t kBatch = 128;
+// How far ahead of the removal being applied its successors' data is asked for.
+constexpr size_t kApplyAhead = 3;
 
 // The passes of Remark 5.9 until the target count, a tolerance stop, or a
 // pass that removes nothing (Remark 5.11).
@@ -100,13 +102,14 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
       const size_t end = std::min(order.size(), begin + kBatch);
       ahead.propose(remover, w, order, begin, end, pass);
       for (size_t i = begin; i < end; ++i) {
+        ahead.prefetch(w, i + kApplyAhead);
         const reduce::QueueEntry& e = order[i];
         if (w.live_faces <= target) {
           reached = true;
           break;
         }
         const size_t f = size_t(e.face);
-        if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
+        if (!ahead.was_current(i) || !w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
         if ((++tries & 1023) == 0) {
           if (progress.cancelled()) throw Cancelled("reduce: cancelled");
           progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "queue.h"
 #include "prefetch.h"
+#include "weights.h"
 
 namespace isoform::reduce {
 namespace {
@@ -193,7 +193,23 @@ Outcome Remover::evaluate(Proposal& q) const {
   for (int v : platelet.ring)
     if (!w_.vfaces[size_t(v)].empty()) prefetch(w_.vfaces[size_t(v)].data());
   if (tracker_.active() && !tracker_.measure(w_, platelet, q.point, q.faces, q.pending)) return Outcome::Tolerance;
+  new_weights(q);
   return Outcome::Removed;
+}
+
+// The weights of the new faces from the values the commit will leave (p at
+// the point, with the fit's curvature): the same numbers update_weight
+// would compute afterwards, computed here where removals run side by side.
+void Remover::new_weights(Proposal& q) const {
+  const int pv = q.platelet.a[0];
+  const double absolute = std::abs(q.fit.k1) + std::abs(q.fit.k2);
+  auto A = [&](int v) { return v == pv ? absolute : w_.absolute[size_t(v)]; };
+  q.weights.clear();
+  for (const auto& t : q.faces.tri) {
+    const double sigma = angle_weight(local_pos(w_, q.platelet, q.point, t[0]), local_pos(w_, q.platelet, q.point, t[1]),
+                                      local_pos(w_, q.platelet, q.point, t[2]));
+    q.weights.push_back(triangle_weight(sigma, A(t[0]), A(t[1]), A(t[2])));
+  }
 }
 
 Outcome Remover::apply(const Proposal& p, int pass) {
@@ -240,7 +256,7 @@ void Remover::commit(const Proposal& q, int pass) {
   const size_t a = size_t(p.a[0]);
   w_.pos[a] = q.point;
   w_.boundary[a] = p.closed ? 0 : 1;
-  w_.absolute[a] = std::abs(r.k1) + std::abs(r.k2);
+  w_.absolute[a] = std::abs(r.k1) + std::abs(r.k2);  // as new_weights took it
   w_.k1[a] = float(r.k1);
   w_.k2[a] = float(r.k2);
   w_.flags[a] = 0;
@@ -249,7 +265,7 @@ void Remover::commit(const Proposal& q, int pass) {
     w_.d1[3 * a + size_t(k)] = float(r.d1(k));
     w_.d2[3 * a + size_t(k)] = float(r.d2(k));
   }
-  for (int id : ids_) update_weight(w_, id);
+  for (size_t i = 0; i < ids_.size(); ++i) w_.weight[size_t(ids_[i])] = q.weights[i];
   if (tracker_.active()) tracker_.commit(p, q.pending, ids_);
 }
 

@@ -28,6 +28,7 @@ struct Proposal {
   int swaps = 0;
   bool at_vertex = false;  // the point is a vertex of T (vertex fallback)
   TrackerPending pending;
+  std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
   // The vertices whose data it read: T's, and those of every platelet face.
   std::vector<int> reads;
 };
@@ -58,6 +59,7 @@ class Remover {
   bool half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const;
   bool domain_kept(const Platelet& p, const Eigen::Vector3d& point) const;
   bool faces_ok(const Proposal& p, const Frame& frame, const Eigen::Vector3d& point) const;
+  void new_weights(Proposal& p) const;
   void commit(const Proposal& p, int pass);
 
   WorkMesh& w_;

@@ -80,6 +80,21 @@ const Proposal& Speculation::current(const Remover& remover, size_t i) {
   return p;
 }
 
+// NOTE: a batch's removals were computed a while ago, or on the other core,
+// so their faces and face lists are cold again when their turn comes.
+void Speculation::prefetch(const WorkMesh& w, size_t i) const {
+  if (i < begin_ || i - begin_ >= computed_.size() || !computed_[i - begin_]) return;
+  const Proposal& p = slots_[i - begin_];
+  for (int f : p.platelet.faces) {
+    reduce::prefetch(&w.tri[size_t(f)]);
+    reduce::prefetch(&w.face_stamp[size_t(f)]);
+  }
+  for (int v : p.reads) {
+    reduce::prefetch(&changed_[size_t(v)]);
+    reduce::prefetch(&w.vfaces[size_t(v)]);
+  }
+}
+
 void Speculation::applied(const Proposal& p) {
   for (int v : p.platelet.a) changed_[size_t(v)] = batch_;
   for (int v : p.platelet.ring) changed_[size_t(v)] = batch_;

@@ -33,10 +33,16 @@ class Speculation {
   // current for `pass` now.
   void propose(const Remover& remover, const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin,
                size_t end, int pass);
+  // Was entry i current when the batch began? (One that was not is not now:
+  // stamps only grow, dead faces stay dead, a face made in a pass keeps it.)
+  bool was_current(size_t i) const { return computed_[i - begin_] != 0; }
   // The removal of entry i of the batch as it would be computed now: the
   // one computed ahead when nothing it read has changed since, else
   // computed again.
   const Proposal& current(const Remover& remover, size_t i);
+  // Asks for what applying entry i's removal will read and write (only
+  // timing depends on it).
+  void prefetch(const WorkMesh& w, size_t i) const;
   // Records that p was applied: its vertices changed.
   void applied(const Proposal& p);
 
