@@ -3,6 +3,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include "prefetch.h"
 
@@ -59,14 +60,21 @@ void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::
   entries_.clear();
   for (size_t i = begin; i < end; ++i)
     if (is_current(w, order[i], pass)) entries_.push_back(i);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, entries_.size()), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t k = r.begin(); k != r.end(); ++k) {
-      const size_t i = entries_[k];
-      prefetch_ahead(w, order, i);
-      remover.propose(order[i].face, slots_[i - begin]);
-      computed_[i - begin] = 1;
-    }
-  });
+  // NOTE: one removal per task (simple partitioner, grain 1): a thread
+  // that holds a stolen half of the batch and loses its core would keep
+  // the other waiting for all of it; so each thread can take back the
+  // other's untouched removals.
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, entries_.size(), 1),
+      [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+          const size_t i = entries_[k];
+          prefetch_ahead(w, order, i);
+          remover.propose(order[i].face, slots_[i - begin]);
+          computed_[i - begin] = 1;
+        }
+      },
+      tbb::simple_partitioner());
 }
 
 const Proposal& Speculation::current(const Remover& remover, size_t i) {
