@@ -164,7 +164,7 @@ Outcome Remover::evaluate(Proposal& q) const {
   if (status == PlateletStatus::Corona) return Outcome::Corona;
   if (status == PlateletStatus::Nonmanifold) return Outcome::Nonmanifold;
   // NOTE: what the fit, the tests and the commit read next, asked for
-  // together (only timing depends on it; see run_passes).
+  // together (only timing depends on it; see speculate.cpp).
   tracker_.prefetch_lists(platelet);
   for (int v : platelet.ring) {
     prefetch(&w_.pos[size_t(v)]);

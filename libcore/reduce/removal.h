@@ -43,11 +43,6 @@ class Remover {
   // checks that depend on every removal so far, then the commit, whose faces
   // belong to `pass`.
   Outcome apply(const Proposal& p, int pass);
-  // Tries to remove face f now (propose, then apply).
-  Outcome try_remove(int f, int pass) {
-    propose(f, own_);
-    return apply(own_, pass);
-  }
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
@@ -65,7 +60,6 @@ class Remover {
   WorkMesh& w_;
   ReduceOptions options_;
   Tracker tracker_;
-  Proposal own_;
   std::vector<int> ids_;
   long long swaps_ = 0, vertex_points_ = 0;
 };
