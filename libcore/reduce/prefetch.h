@@ -1,5 +1,5 @@
 // A hint to the processor to fetch the cache line holding an address, for
-// the reduction's reads in weight order all over memory (reduce.cpp). Only
+// the reduction's reads in weight order all over memory (speculate.cpp). Only
 // timing depends on it; without GCC or Clang it does nothing.
 #pragma once
 

@@ -21,14 +21,15 @@ struct Lighter {
 };
 constexpr Lighter lighter{};
 
-}  // namespace
-
+// Sets w.weight of face f from its vertices (5.21-5.23).
 void update_weight(WorkMesh& w, int f) {
   const auto& t = w.tri[size_t(f)];
   const double sigma = angle_weight(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
   w.weight[size_t(f)] = triangle_weight(sigma, w.absolute[size_t(t[0])], w.absolute[size_t(t[1])],
                                         w.absolute[size_t(t[2])]);
 }
+
+}  // namespace
 
 void compute_weights(WorkMesh& w) {
   w.weight.assign(w.tri.size(), 0.0);

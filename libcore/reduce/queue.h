@@ -36,8 +36,6 @@ class PassQueue {
   std::vector<uint64_t> old_;  // next_pass's bits
 };
 
-// Sets w.weight of face f from its vertices (5.21-5.23).
-void update_weight(WorkMesh& w, int f);
 // Sets every face's weight (in parallel; each face on its own).
 void compute_weights(WorkMesh& w);
 

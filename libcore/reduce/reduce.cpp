@@ -21,9 +21,9 @@
 #include "../errors.h"
 #include "../mesh_normals.h"
 #include "manifold_parts.h"
-#include "prefetch.h"
 #include "queue.h"
 #include "removal.h"
+#include "speculate.h"
 #include "validate.h"
 #include "work_mesh.h"
 
@@ -73,38 +73,12 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
   }
 }
 
-// NOTE: the queue visits the mesh in weight order, all over memory, and a
-// removal's time is mostly spent waiting for its faces and vertices. The
-// entries ahead are known, so their data is fetched early, in four steps
-// (the face, then its vertices, then their face lists, then those faces),
-// each from what the step before fetched. Only timing depends on it.
-void prefetch_ahead(const WorkMesh& w, const std::vector<reduce::QueueEntry>& order, size_t i) {
-  constexpr size_t kFace = 24, kVertex = 12, kList = 5, kCorona = 2;
-  if (i + kFace < order.size()) {
-    const size_t f = size_t(order[i + kFace].face);
-    reduce::prefetch(&w.tri[f]);
-    reduce::prefetch(&w.face_alive[f]);
-    reduce::prefetch(&w.face_stamp[f]);
-    reduce::prefetch(&w.face_pass[f]);
-  }
-  if (i + kVertex < order.size()) {
-    for (int v : w.tri[size_t(order[i + kVertex].face)]) {
-      reduce::prefetch(&w.vfaces[size_t(v)]);
-      reduce::prefetch(&w.pos[size_t(v)]);
-      reduce::prefetch(&w.boundary[size_t(v)]);
-    }
-  }
-  if (i + kList < order.size()) {
-    for (int v : w.tri[size_t(order[i + kList].face)]) {
-      const std::vector<int>& list = w.vfaces[size_t(v)];
-      if (!list.empty()) reduce::prefetch(list.data());
-    }
-  }
-  if (i + kCorona < order.size()) {
-    for (int v : w.tri[size_t(order[i + kCorona].face)])
-      for (int g : w.vfaces[size_t(v)]) reduce::prefetch(&w.tri[size_t(g)]);
-  }
-}
+// Entries of a pass computed ahead at a time (speculate.h): enough to keep
+// the threads busy between two serial stretches, few enough that a removal
+// rarely meets an earlier one of its batch.
+constexpr size_t kBatch = 128;
+// How far ahead of the removal being applied its successors' data is asked for.
+constexpr size_t kApplyAhead = 3;
 
 // The passes of Remark 5.9 until the target count, a tolerance stop, or a
 // pass that removes nothing (Remark 5.11).
@@ -112,6 +86,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
                 ReduceStats& stats) {
   reduce::Remover remover(w, options);
   reduce::PassQueue queue;
+  reduce::Speculation ahead(w.pos.size());
   // Beyond the seed (graph mode): a removal that would take one of its knots
   // past 4 times the RMS error of the knots moved so far waits (docs/reduce.md).
   if (options.graph) remover.tracker().set_guard(4.0);
@@ -121,29 +96,38 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   while (w.live_faces > target) {
     const int pass = ++stats.passes;
     long long removed = 0, deferred = 0;
-    bool stop = false;
+    bool stop = false, reached = false;
     const std::vector<reduce::QueueEntry>& order = queue.next_pass(w, pass);
-    for (size_t i = 0; i < order.size(); ++i) {
-      const reduce::QueueEntry& e = order[i];
-      if (w.live_faces <= target) break;
-      prefetch_ahead(w, order, i);
-      const size_t f = size_t(e.face);
-      if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
-      if ((++tries & 1023) == 0) {
-        if (progress.cancelled()) throw Cancelled("reduce: cancelled");
-        progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));
-      }
-      const Outcome o = remover.try_remove(e.face, pass);
-      if (o == Outcome::Removed) {
-        ++removed;
-        ++stats.removals;
-        continue;
-      }
-      count_refusal(o, stats.refused);
-      deferred += o == Outcome::Deferred ? 1 : 0;
-      if (o == Outcome::RmsStop) {
-        stop = true;
-        break;
+    for (size_t begin = 0; begin < order.size() && !stop && !reached; begin += kBatch) {
+      const size_t end = std::min(order.size(), begin + kBatch);
+      ahead.propose(remover, w, order, begin, end, pass);
+      for (size_t i = begin; i < end; ++i) {
+        ahead.prefetch(w, i + kApplyAhead);
+        const reduce::QueueEntry& e = order[i];
+        if (w.live_faces <= target) {
+          reached = true;
+          break;
+        }
+        const size_t f = size_t(e.face);
+        if (!ahead.was_current(i) || !w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
+        if ((++tries & 1023) == 0) {
+          if (progress.cancelled()) throw Cancelled("reduce: cancelled");
+          progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));
+        }
+        const reduce::Proposal& proposal = ahead.current(remover, i);
+        const Outcome o = remover.apply(proposal, pass);
+        if (o == Outcome::Removed) {
+          ahead.applied(proposal);
+          ++removed;
+          ++stats.removals;
+          continue;
+        }
+        count_refusal(o, stats.refused);
+        deferred += o == Outcome::Deferred ? 1 : 0;
+        if (o == Outcome::RmsStop) {
+          stop = true;
+          break;
+        }
       }
     }
     if (stop) {

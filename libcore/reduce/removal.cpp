@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "queue.h"
 #include "prefetch.h"
+#include "weights.h"
 
 namespace isoform::reduce {
 namespace {
@@ -50,8 +50,7 @@ Remover::Remover(WorkMesh& w, const ReduceOptions& options)
 // Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
 // open corona it is not the centroid): p's projection onto P lies strictly
 // left of every directed edge of the platelet boundary polygon (5.17).
-bool Remover::half_plane_ok(const Frame& frame, const Eigen::Vector3d& point) const {
-  const Platelet& p = platelet_;
+bool Remover::half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const {
   const Eigen::Vector2d q = frame.uv(point);
   const int n = int(p.ring.size());
   for (int j = 0; j < p.link_edges(); ++j) {
@@ -67,8 +66,7 @@ bool Remover::half_plane_ok(const Frame& frame, const Eigen::Vector3d& point) co
 
 // Graph mode: the removed boundary vertices of T lie on the two new boundary
 // edges y_first-p and p-y_last in (x, y), so the domain stays covered.
-bool Remover::domain_kept(const Eigen::Vector3d& point) const {
-  const Platelet& p = platelet_;
+bool Remover::domain_kept(const Platelet& p, const Eigen::Vector3d& point) const {
   const Eigen::Vector3d& first = w_.pos[size_t(p.ring.front())];
   const Eigen::Vector3d& last = w_.pos[size_t(p.ring.back())];
   for (int k = 0; k < 3; ++k) {
@@ -82,10 +80,11 @@ bool Remover::domain_kept(const Eigen::Vector3d& point) const {
 // isoform's guard: no new triangle is degenerate or turned over against the
 // corona triangle it replaces (fan faces) or against T's plane (swapped
 // faces); in graph mode every new triangle also keeps its (x, y) orientation.
-bool Remover::faces_ok(const Frame& frame, const Eigen::Vector3d& point) const {
-  const Platelet& p = platelet_;
-  for (size_t i = 0; i < faces_.tri.size(); ++i) {
-    const auto& t = faces_.tri[i];
+bool Remover::faces_ok(const Proposal& q, const Frame& frame, const Eigen::Vector3d& point) const {
+  const Platelet& p = q.platelet;
+  const LocalFaces& faces = q.faces;
+  for (size_t i = 0; i < faces.tri.size(); ++i) {
+    const auto& t = faces.tri[i];
     const Eigen::Vector3d& x0 = local_pos(w_, p, point, t[0]);
     const Eigen::Vector3d& x1 = local_pos(w_, p, point, t[1]);
     const Eigen::Vector3d& x2 = local_pos(w_, p, point, t[2]);
@@ -93,8 +92,8 @@ bool Remover::faces_ok(const Frame& frame, const Eigen::Vector3d& point) const {
     const double scale = std::max({(x1 - x0).squaredNorm(), (x2 - x1).squaredNorm(), (x0 - x2).squaredNorm()});
     if (!(nn.norm() > 1e-12 * scale)) return false;
     Eigen::Vector3d reference = frame.n;
-    if (faces_.source[i] >= 0) {
-      const auto& o = w_.tri[size_t(faces_.source[i])];
+    if (faces.source[i] >= 0) {
+      const auto& o = w_.tri[size_t(faces.source[i])];
       reference = (w_.pos[size_t(o[1])] - w_.pos[size_t(o[0])]).cross(w_.pos[size_t(o[2])] - w_.pos[size_t(o[0])]);
     }
     if (!(nn.dot(reference) > 0)) return false;
@@ -106,10 +105,10 @@ bool Remover::faces_ok(const Frame& frame, const Eigen::Vector3d& point) const {
 // The half-plane test, the fan and its guards for the fitted point; when it
 // fails on a closed corona, beyond the seed, T's vertices (nearest to the
 // fitted point first) are tried in its place, as an edge collapse would.
-Outcome Remover::place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& point, bool* at_vertex) {
-  const Platelet& p = platelet_;
-  Eigen::Vector3d candidates[4] = {point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])]};
-  const Eigen::Vector3d fitted = point;
+Outcome Remover::place_point(const Frame& frame, bool keep_xy, Proposal& q) const {
+  const Platelet& p = q.platelet;
+  Eigen::Vector3d candidates[4] = {q.point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])]};
+  const Eigen::Vector3d fitted = q.point;
   std::sort(candidates + 1, candidates + 4, [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
     return (x - fitted).squaredNorm() < (y - fitted).squaredNorm();
   });
@@ -117,17 +116,17 @@ Outcome Remover::place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& 
   Outcome first = Outcome::Removed;
   for (int i = 0; i < count; ++i) {
     Outcome o = Outcome::Removed;
-    if (!half_plane_ok(frame, candidates[i]))
+    if (!half_plane_ok(p, frame, candidates[i]))
       o = Outcome::HalfPlane;
-    else if (keep_xy && !domain_kept(candidates[i]))
+    else if (keep_xy && !domain_kept(p, candidates[i]))
       o = Outcome::Boundary;
     else {
-      build_fan(platelet_, faces_);
-      if (!faces_ok(frame, candidates[i])) o = Outcome::Flip;
+      build_fan(p, q.faces);
+      if (!faces_ok(q, frame, candidates[i])) o = Outcome::Flip;
     }
     if (o == Outcome::Removed) {
-      point = candidates[i];
-      *at_vertex = i > 0;
+      q.point = candidates[i];
+      q.at_vertex = i > 0;
       return o;
     }
     if (i == 0) first = o;
@@ -135,60 +134,104 @@ Outcome Remover::place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& 
   return first;
 }
 
-Outcome Remover::try_remove(int f, int pass) {
-  const auto& t = w_.tri[size_t(f)];
+void Remover::propose(int f, Proposal& out) const {
+  out.face = f;
+  out.swaps = 0;
+  out.at_vertex = false;
+  out.pending.assigned_valid = false;
+  out.platelet.face = -1;
+  out.platelet.faces.clear();
+  out.platelet.ring.clear();
+  out.outcome = evaluate(out);
+  // What it read: T's vertices, and every vertex of the platelet's faces
+  // (after a successful gather, the polygon).
+  const Platelet& p = out.platelet;
+  out.reads.assign(w_.tri[size_t(f)].begin(), w_.tri[size_t(f)].end());
+  if (!p.ring.empty() && out.outcome != Outcome::Corona && out.outcome != Outcome::Nonmanifold) {
+    out.reads.insert(out.reads.end(), p.ring.begin(), p.ring.end());
+    return;
+  }
+  for (int g : p.faces) out.reads.insert(out.reads.end(), w_.tri[size_t(g)].begin(), w_.tri[size_t(g)].end());
+}
+
+// The tests of one removal that depend on its own neighbourhood alone.
+Outcome Remover::evaluate(Proposal& q) const {
+  const auto& t = w_.tri[size_t(q.face)];
   const bool touches_boundary = w_.boundary[size_t(t[0])] || w_.boundary[size_t(t[1])] || w_.boundary[size_t(t[2])];
   if (options_.lock_boundary && touches_boundary) return Outcome::Boundary;
-  const PlateletStatus status = gather_platelet(w_, f, platelet_);
+  Platelet& platelet = q.platelet;
+  const PlateletStatus status = gather_platelet(w_, q.face, platelet);
   if (status == PlateletStatus::Corona) return Outcome::Corona;
   if (status == PlateletStatus::Nonmanifold) return Outcome::Nonmanifold;
   // NOTE: what the fit, the tests and the commit read next, asked for
-  // together (only timing depends on it; see run_passes).
-  tracker_.prefetch_lists(platelet_);
-  for (int v : platelet_.ring) {
+  // together (only timing depends on it; see speculate.cpp).
+  tracker_.prefetch_lists(platelet);
+  for (int v : platelet.ring) {
     prefetch(&w_.pos[size_t(v)]);
     prefetch(&w_.vfaces[size_t(v)]);
   }
   bool plane = false;
-  const Frame frame = platelet_frame(w_, platelet_, &plane);
+  const Frame frame = platelet_frame(w_, platelet, &plane);
   if (!plane) return Outcome::Flip;
-  const bool keep_xy = options_.graph && !platelet_.closed;
-  const Replacement r = replacement_point(w_, platelet_, frame, options_.point, keep_xy);
-  if (!r.ok || !r.point.allFinite()) return Outcome::Flip;
-  Eigen::Vector3d point = r.point;
-  bool at_vertex = false;
-  const Outcome placed = place_point(frame, keep_xy, point, &at_vertex);
+  const bool keep_xy = options_.graph && !platelet.closed;
+  q.fit = replacement_point(w_, platelet, frame, options_.point, keep_xy);
+  if (!q.fit.ok || !q.fit.point.allFinite()) return Outcome::Flip;
+  q.point = q.fit.point;
+  const Outcome placed = place_point(frame, keep_xy, q);
   if (placed != Outcome::Removed) return placed;
-  int swaps = 0;
   if (options_.swaps) {
-    swaps = lawson_swaps(w_, platelet_, frame, point, faces_);
-    if (swaps > 0 && !faces_ok(frame, point)) return Outcome::Flip;
+    q.swaps = lawson_swaps(w_, platelet, frame, q.point, q.faces);
+    if (q.swaps > 0 && !faces_ok(q, frame, q.point)) return Outcome::Flip;
   }
   if (options_.refine_point && tracker_.active()) {
-    Eigen::Vector3d refined = point;
-    const Eigen::Vector3d direction = options_.graph ? Eigen::Vector3d(0, 0, 1) : r.normal;
-    tracker_.refine(w_, platelet_, frame, faces_, direction, refined);
+    Eigen::Vector3d refined = q.point;
+    const Eigen::Vector3d direction = options_.graph ? Eigen::Vector3d(0, 0, 1) : q.fit.normal;
+    tracker_.refine(w_, platelet, frame, q.faces, direction, refined, q.pending);
     // Kept only when the moved point still passes every test.
-    if (refined.allFinite() && half_plane_ok(frame, refined) && faces_ok(frame, refined)) point = refined;
+    if (refined.allFinite() && half_plane_ok(platelet, frame, refined) && faces_ok(q, frame, refined)) q.point = refined;
   }
-  for (int v : platelet_.ring)
+  for (int v : platelet.ring)
     if (!w_.vfaces[size_t(v)].empty()) prefetch(w_.vfaces[size_t(v)].data());
+  if (tracker_.active() && !tracker_.measure(w_, platelet, q.point, q.faces, q.pending)) return Outcome::Tolerance;
+  new_weights(q);
+  return Outcome::Removed;
+}
+
+// The weights of the new faces from the values the commit will leave (p at
+// the point, with the fit's curvature): the same numbers update_weight
+// would compute afterwards, computed here where removals run side by side.
+void Remover::new_weights(Proposal& q) const {
+  const int pv = q.platelet.a[0];
+  const double absolute = std::abs(q.fit.k1) + std::abs(q.fit.k2);
+  auto A = [&](int v) { return v == pv ? absolute : w_.absolute[size_t(v)]; };
+  q.weights.clear();
+  for (const auto& t : q.faces.tri) {
+    const double sigma = angle_weight(local_pos(w_, q.platelet, q.point, t[0]), local_pos(w_, q.platelet, q.point, t[1]),
+                                      local_pos(w_, q.platelet, q.point, t[2]));
+    q.weights.push_back(triangle_weight(sigma, A(t[0]), A(t[1]), A(t[2])));
+  }
+}
+
+Outcome Remover::apply(const Proposal& p, int pass) {
+  if (p.outcome != Outcome::Removed) return p.outcome;
   if (tracker_.active()) {
     bool rms_stop = false, deferred = false;
-    if (!tracker_.check(w_, platelet_, point, faces_, &rms_stop, &deferred))
+    if (!tracker_.check(p.pending, &rms_stop, &deferred))
       return rms_stop ? Outcome::RmsStop : deferred ? Outcome::Deferred : Outcome::Tolerance;
   }
-  swaps_ += swaps;
-  vertex_points_ += at_vertex ? 1 : 0;
-  commit(r, point, pass);
+  swaps_ += p.swaps;
+  vertex_points_ += p.at_vertex ? 1 : 0;
+  commit(p, pass);
   return Outcome::Removed;
 }
 
 // Replaces the platelet's faces by the new ones: p takes T's first vertex
 // index (5.40), the other two vertices of T go, new faces reuse the lowest
 // old ids, and every changed face gets a new stamp and the current pass.
-void Remover::commit(const Replacement& r, const Eigen::Vector3d& point, int pass) {
-  const Platelet& p = platelet_;
+void Remover::commit(const Proposal& q, int pass) {
+  const Platelet& p = q.platelet;
+  const LocalFaces& faces = q.faces;
+  const Replacement& r = q.fit;
   for (int f : p.faces)
     for (int v : w_.tri[size_t(f)]) {
       if (v == p.a[0] || v == p.a[1] || v == p.a[2]) continue;
@@ -197,23 +240,23 @@ void Remover::commit(const Replacement& r, const Eigen::Vector3d& point, int pas
     }
   for (int v : p.a) w_.vfaces[size_t(v)].clear();
   w_.vertex_alive[size_t(p.a[1])] = w_.vertex_alive[size_t(p.a[2])] = 0;
-  ids_.assign(p.faces.begin(), p.faces.begin() + long(faces_.tri.size()));
+  ids_.assign(p.faces.begin(), p.faces.begin() + long(faces.tri.size()));
   for (size_t i = 0; i < p.faces.size(); ++i) {
     const size_t id = size_t(p.faces[i]);
     ++w_.face_stamp[id];
-    if (i >= faces_.tri.size()) {
+    if (i >= faces.tri.size()) {
       w_.face_alive[id] = 0;
       continue;
     }
-    w_.tri[id] = faces_.tri[i];
+    w_.tri[id] = faces.tri[i];
     w_.face_pass[id] = pass;
-    for (int v : faces_.tri[i]) w_.vfaces[size_t(v)].push_back(int(id));
+    for (int v : faces.tri[i]) w_.vfaces[size_t(v)].push_back(int(id));
   }
-  w_.live_faces -= (long long)(p.faces.size() - faces_.tri.size());
+  w_.live_faces -= (long long)(p.faces.size() - faces.tri.size());
   const size_t a = size_t(p.a[0]);
-  w_.pos[a] = point;
+  w_.pos[a] = q.point;
   w_.boundary[a] = p.closed ? 0 : 1;
-  w_.absolute[a] = std::abs(r.k1) + std::abs(r.k2);
+  w_.absolute[a] = std::abs(r.k1) + std::abs(r.k2);  // as new_weights took it
   w_.k1[a] = float(r.k1);
   w_.k2[a] = float(r.k2);
   w_.flags[a] = 0;
@@ -222,8 +265,8 @@ void Remover::commit(const Replacement& r, const Eigen::Vector3d& point, int pas
     w_.d1[3 * a + size_t(k)] = float(r.d1(k));
     w_.d2[3 * a + size_t(k)] = float(r.d2(k));
   }
-  for (int id : ids_) update_weight(w_, id);
-  if (tracker_.active()) tracker_.commit(ids_);
+  for (size_t i = 0; i < ids_.size(); ++i) w_.weight[size_t(ids_[i])] = q.weights[i];
+  if (tracker_.active()) tracker_.commit(p, q.pending, ids_);
 }
 
 }  // namespace isoform::reduce

@@ -15,28 +15,51 @@ namespace isoform::reduce {
 
 enum class Outcome { Removed, Corona, HalfPlane, Flip, Nonmanifold, Boundary, Tolerance, RmsStop, Deferred };
 
+// The removal of one triangle as computed against the mesh as it is, before
+// anything changes: what the tests that depend on its own neighbourhood
+// found and, when they all pass, what would change.
+struct Proposal {
+  int face = -1;
+  Outcome outcome = Outcome::Removed;  // Removed: every local test passed
+  Platelet platelet;
+  LocalFaces faces;
+  Replacement fit;
+  Eigen::Vector3d point{0, 0, 0};  // the point inserted
+  int swaps = 0;
+  bool at_vertex = false;  // the point is a vertex of T (vertex fallback)
+  TrackerPending pending;
+  std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
+  // The vertices whose data it read: T's, and those of every platelet face.
+  std::vector<int> reads;
+};
+
 class Remover {
  public:
   Remover(WorkMesh& w, const ReduceOptions& options);
-  // Tries to remove face f; on success the faces it makes belong to `pass`.
-  Outcome try_remove(int f, int pass);
+  // Computes the removal of face f into `out`, changing nothing (so several
+  // may run side by side).
+  void propose(int f, Proposal& out) const;
+  // Makes a proposal computed against the mesh as it is now: the tracker's
+  // checks that depend on every removal so far, then the commit, whose faces
+  // belong to `pass`.
+  Outcome apply(const Proposal& p, int pass);
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
   Tracker& tracker() { return tracker_; }
 
  private:
-  Outcome place_point(const Frame& frame, bool keep_xy, Eigen::Vector3d& point, bool* at_vertex);
-  bool half_plane_ok(const Frame& frame, const Eigen::Vector3d& point) const;
-  bool domain_kept(const Eigen::Vector3d& point) const;
-  bool faces_ok(const Frame& frame, const Eigen::Vector3d& point) const;
-  void commit(const Replacement& r, const Eigen::Vector3d& point, int pass);
+  Outcome evaluate(Proposal& p) const;
+  Outcome place_point(const Frame& frame, bool keep_xy, Proposal& p) const;
+  bool half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const;
+  bool domain_kept(const Platelet& p, const Eigen::Vector3d& point) const;
+  bool faces_ok(const Proposal& p, const Frame& frame, const Eigen::Vector3d& point) const;
+  void new_weights(Proposal& p) const;
+  void commit(const Proposal& p, int pass);
 
   WorkMesh& w_;
   ReduceOptions options_;
   Tracker tracker_;
-  Platelet platelet_;
-  LocalFaces faces_;
   std::vector<int> ids_;
   long long swaps_ = 0, vertex_points_ = 0;
 };

@@ -78,27 +78,24 @@ double height_above(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Ei
 
 }  // namespace
 
-bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
-                    bool* rms_stop, bool* deferred) {
-  *rms_stop = false;
-  *deferred = false;
-  double local_max2 = 0;
-  long long fresh = 0;
-  pending_vertex_.clear();
-  pending_face_.clear();
-  pending_err2_.clear();
-  pending_sum_ = sum_err2_;
-  pending_max_ = max_distance_;
+bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
+                      TrackerPending& out) const {
+  out.vertex.clear();
+  out.face.clear();
+  out.err2.clear();
+  out.delta.clear();
+  out.largest_err2 = out.largest_distance = 0;
+  out.fresh = 0;
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
   // The few original vertices nearest to the new point, whose triangles
   // bound its distance to the original surface.
   constexpr int kNear = 4;
   int near_vertex[kNear] = {-1, -1, -1, -1};
   double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
-  const bool reuse = assigned_valid_;
+  const bool reuse = out.assigned_valid;
   // An infinite tolerance only keeps the assignment, unless asked to measure.
   const bool distances = distance_ > 0 && (std::isfinite(distance_) || measure_);
-  assigned_valid_ = false;
+  out.assigned_valid = false;
   size_t index = 0;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)], ++index) {
@@ -107,9 +104,9 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       // after refine() the face it chose is kept (in graph mode p's (x, y)
       // did not move, so it is the same face; else the distance to it is
       // still an upper bound of the distance to the reduced surface).
-      int best = reuse ? assigned_[index] : 0;
+      int best = reuse ? out.assigned[index] : 0;
       double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
-      const size_t first = reuse ? size_t(assigned_[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
+      const size_t first = reuse ? size_t(out.assigned[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
       // Without a bound or a measurement the kept face is all that is needed.
       const bool evaluate = rms_ > 0 || distances || !reuse;
       for (size_t i = first; evaluate && i < last; ++i) {
@@ -135,7 +132,7 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
       }
       if (distances) {
         if (nearest > distance_) return false;
-        pending_max_ = std::max(pending_max_, nearest);
+        out.largest_distance = std::max(out.largest_distance, nearest);
         double d2 = (x - point).squaredNorm();
         int id = v;
         for (int k = 0; k < kNear; ++k)
@@ -145,13 +142,13 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
           }
       }
       if (rms_ > 0) {
-        pending_sum_ += best_err2 - original_[size_t(v)].err2;
-        pending_err2_.push_back(best_err2);
-        local_max2 = std::max(local_max2, best_err2);
-        fresh += touched_[size_t(v)] ? 0 : 1;
+        out.delta.push_back(best_err2 - original_[size_t(v)].err2);
+        out.err2.push_back(best_err2);
+        out.largest_err2 = std::max(out.largest_err2, best_err2);
+        out.fresh += touched_[size_t(v)] ? 0 : 1;
       }
-      pending_vertex_.push_back(v);
-      pending_face_.push_back(best);
+      out.vertex.push_back(v);
+      out.face.push_back(best);
     }
   // The new point against the original triangles around those vertices (a
   // subset of the original surface, so again an upper bound).
@@ -166,36 +163,48 @@ bool Tracker::check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d&
   }
   if (distance_ > 0 && near_original < std::numeric_limits<double>::infinity()) {
     if (near_original > distance_) return false;
-    pending_max_ = std::max(pending_max_, near_original);
+    out.largest_distance = std::max(out.largest_distance, near_original);
   }
+  return true;
+}
+
+bool Tracker::check(const TrackerPending& t, bool* rms_stop, bool* deferred) {
+  *rms_stop = false;
+  *deferred = false;
+  // NOTE: distances are >= 0, so this is the running maximum the removals
+  // would leave, whatever the order of its terms.
+  pending_max_ = std::max(max_distance_, t.largest_distance);
   // The guard: no knot of this removal farther than guard_ times the RMS of
   // the knots already moved off (their typical error so far).
   if (rms_ > 0 && guard_ > 0 && sum_err2_ > 0 && touched_count_ > 0 &&
-      local_max2 > guard_ * guard_ * (sum_err2_ / double(touched_count_))) {
+      t.largest_err2 > guard_ * guard_ * (sum_err2_ / double(touched_count_))) {
     *deferred = true;
     return false;
   }
-  pending_touched_ = fresh;
+  // NOTE: the changes are added one by one, in the vertices' order, so the
+  // sum is the same to the bit whenever the removal was computed.
+  pending_sum_ = sum_err2_;
+  for (double d : t.delta) pending_sum_ += d;
   if (rms_ > 0 && std::sqrt(std::max(0.0, pending_sum_) / double(original_.size())) > rms_) {
     *rms_stop = true;
     return false;
   }
-  for (int f : p.faces) head_[size_t(f)] = -1;  // re-linked on commit
   return true;
 }
 
-void Tracker::commit(const std::vector<int>& ids) {
-  for (size_t i = 0; i < pending_vertex_.size(); ++i) {
-    const int v = pending_vertex_[i], f = ids[size_t(pending_face_[i])];
+void Tracker::commit(const Platelet& p, const TrackerPending& t, const std::vector<int>& ids) {
+  for (int f : p.faces) head_[size_t(f)] = -1;  // re-linked below
+  for (size_t i = 0; i < t.vertex.size(); ++i) {
+    const int v = t.vertex[i], f = ids[size_t(t.face[i])];
     next_[size_t(v)] = head_[size_t(f)];
     head_[size_t(f)] = v;
     if (rms_ > 0) {
-      original_[size_t(v)].err2 = pending_err2_[i];
+      original_[size_t(v)].err2 = t.err2[i];
       touched_[size_t(v)] = 1;
     }
   }
   sum_err2_ = pending_sum_;
-  touched_count_ += pending_touched_;
+  touched_count_ += t.fresh;
   max_distance_ = pending_max_;
 }
 

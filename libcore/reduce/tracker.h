@@ -20,6 +20,20 @@
 
 namespace isoform::reduce {
 
+// What Tracker::refine and Tracker::measure find for one removal, before
+// anything changes: computing it reads the tracker without changing it, so
+// that removals can be computed side by side (speculate.h).
+struct TrackerPending {
+  std::vector<int> vertex, face;         // each original vertex and the new face it goes to
+  std::vector<double> err2, delta;       // graph: its squared height error, and the change of the sum
+  double largest_err2 = 0;               // graph: the largest err2
+  double largest_distance = 0;           // the largest tracked distance (distances measured)
+  long long fresh = 0;                   // graph: vertices whose error is computed the first time
+  std::vector<int> assigned;             // the faces refine() handed the vertices to
+  bool assigned_valid = false;           // refine() ran for this removal
+  std::vector<ProjectedFace> projected;  // refine's scratch
+};
+
 class Tracker {
  public:
   // Call on the input, before any removal. An infinite distance tolerance
@@ -43,21 +57,25 @@ class Tracker {
   // surface, and a piecewise linear surface through points on a curved
   // surface is on one side of it.
   void refine(const WorkMesh& w, const Platelet& p, const Frame& frame, const LocalFaces& faces,
-              const Eigen::Vector3d& direction, Eigen::Vector3d& point);
+              const Eigen::Vector3d& direction, Eigen::Vector3d& point, TrackerPending& out) const;
 
-  // Checks the removal whose old faces are p.faces and new faces `faces`
-  // with p at `point`. False when a tolerance would be exceeded; *rms_stop
-  // is set when it is the RMS one (Remark 5.10: the reduction stops),
-  // *deferred when it is the guard (set_guard).
-  bool check(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
-             bool* rms_stop, bool* deferred);
+  // The removal whose old faces are p.faces and new faces `faces` with p at
+  // `point`, as far as it depends on its own vertices: their new faces and
+  // errors into `out`. False when the distance tolerance would be exceeded.
+  bool measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
+               TrackerPending& out) const;
+  // The rest, which depends on every removal made so far: false when the
+  // RMS tolerance would be exceeded (*rms_stop; Remark 5.10: the reduction
+  // stops) or the guard refuses (*deferred; set_guard).
+  bool check(const TrackerPending& t, bool* rms_stop, bool* deferred);
   // Graph mode, beyond the seed: refuse a removal that would take one of its
   // knots farther than `factor` times the RMS height error of the knots
   // moved off so far (0: off). The caller relaxes it when a pass stalls.
   void set_guard(double factor) { guard_ = factor; }
   double guard() const { return guard_; }
-  // Applies the last successful check; ids[i] is the face id given to faces[i].
-  void commit(const std::vector<int>& ids);
+  // Applies the last successful check of the removal of p's faces; ids[i]
+  // is the face id given to faces[i].
+  void commit(const Platelet& p, const TrackerPending& t, const std::vector<int>& ids);
 
   double max_distance() const { return max_distance_; }
   double rms() const;
@@ -78,16 +96,9 @@ class Tracker {
   std::vector<int> head_, next_;  // current face -> its original vertices (linked)
   double sum_err2_ = 0, max_distance_ = 0;
   std::vector<uint8_t> touched_;  // per original vertex: its error was ever computed (graph mode)
-  long long touched_count_ = 0, pending_touched_ = 0;
+  long long touched_count_ = 0;
   double guard_ = 0;
-  // The pending assignment of the last check.
-  std::vector<int> pending_vertex_, pending_face_;
-  std::vector<double> pending_err2_;
-  double pending_sum_ = 0, pending_max_ = 0;
-  // The faces refine() handed the vertices to, reused by the next check().
-  std::vector<int> assigned_;
-  bool assigned_valid_ = false;
-  std::vector<ProjectedFace> projected_;  // refine's scratch
+  double pending_sum_ = 0, pending_max_ = 0;  // of the last check
 };
 
 double point_triangle_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,

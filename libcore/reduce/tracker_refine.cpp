@@ -31,13 +31,13 @@ int nearest_face(const LocalFaces& faces, const Eigen::Vector3d& x, Pos&& P) {
 }  // namespace
 
 void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, const LocalFaces& faces,
-                     const Eigen::Vector3d& direction, Eigen::Vector3d& point) {
+                     const Eigen::Vector3d& direction, Eigen::Vector3d& point, TrackerPending& out) const {
   const int pv = p.a[0];
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
   const bool graph = rms_ > 0, nearest = !graph && std::isfinite(distance_);
   Projection projection;
   if (!graph) projection.frame = &frame;
-  if (!nearest) project_faces(faces.tri, projection, P, projected_);
+  if (!nearest) project_faces(faces.tri, projection, P, out.projected);
   double num = 0, den = 0, largest = 0;
   int hint = -1;  // the last vertex's face: the next one is mostly in it too
   // NOTE: the lists are read in weight order, all over memory: their first
@@ -48,8 +48,8 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
     prefetch(&original_[size_t(v)]);
     prefetch(&next_[size_t(v)]);
   }
-  assigned_.clear();
-  assigned_valid_ = true;
+  out.assigned.clear();
+  out.assigned_valid = true;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
       const Eigen::Vector3d& x = original_[size_t(v)].x;
@@ -57,9 +57,9 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
       // nearest; else: the one its projection onto P falls in) and x's
       // barycentric weight of p there.
       double l[3] = {1, 0, 0};
-      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(projected_, projection(x), l, hint);
+      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(out.projected, projection(x), l, hint);
       hint = chosen;
-      assigned_.push_back(chosen);
+      out.assigned.push_back(chosen);
       const auto& t = faces.tri[size_t(chosen)];
       const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
       const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
