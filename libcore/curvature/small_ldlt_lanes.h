@@ -17,32 +17,40 @@ class SmallLdltLanes {
   // Lane l factors the matrix whose entry (r, c) is values[at[r][c]][l].
   // ok[l] is false where SmallLdlt::factor would return false; that lane's
   // D is then not SmallLdlt's and must not be used.
+  //
+  // Left-looking, entry by entry, row after row: entry (i, j) takes its
+  // updates L_ik (D_k L_jk) in the order k = 0, 1, ..., as the right-looking
+  // SmallLdlt applies them, so the same bits; but each entry's updates run
+  // in a register and the entry is stored once, where the right-looking
+  // form loads and stores every entry of the trailing block at every step
+  // (four matrices at once do not leave registers for the block). The
+  // dependent chains are short (at most N - 1 updates) and many, unrolled
+  // whole, so they overlap.
   __attribute__((always_inline)) void factor(const Lanes4* values, const int (&at)[N][N], bool (&ok)[4]) {
-    for (int l = 0; l < 4; ++l) ok[l] = true;
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j <= i; ++j) m_[i][j] = values[at[i][j]];
-    // Unrolled whole (N is at most 14: 455 updates), so every index is a
-    // constant.
+    Lanes4 w[N][N];      // below the diagonal: D_j L_ij, before scaling
+    Lanes4 inv[N];       // 1 / D_j
+    Mask4 good = {-1, -1, -1, -1};
+    const Lanes4 zero = splat4(0.0), huge = splat4(1.79769313486231570815e+308);
 #pragma GCC unroll 16
-    for (int k = 0; k < N; ++k) {
-      const Lanes4 dk = m_[k][k];
-      for (int l = 0; l < 4; ++l) {
-        const double x = dk[l];
-        if (!(std::abs(x) > 0.0) || !std::isfinite(x)) ok[l] = false;
-      }
-      const Lanes4 inv = 1.0 / dk;
-      Lanes4 w[N];
+    for (int i = 0; i < N; ++i) {
 #pragma GCC unroll 16
-      for (int i = k + 1; i < N; ++i) w[i] = m_[i][k];
+      for (int j = 0; j <= i; ++j) {
+        Lanes4 acc = values[at[i][j]];
 #pragma GCC unroll 16
-      for (int i = k + 1; i < N; ++i) {
-        const Lanes4 f = w[i] * inv;
-        m_[i][k] = f;
-        Lanes4* row = m_[i];
-#pragma GCC unroll 16
-        for (int j = k + 1; j <= i; ++j) row[j] -= f * w[j];
+        for (int k = 0; k < j; ++k) acc -= m_[i][k] * w[j][k];
+        if (j < i) {
+          w[i][j] = acc;
+          m_[i][j] = acc * inv[j];
+        } else {
+          // A pivot that is zero or not finite: SmallLdlt::factor stops.
+          const Lanes4 mag = abs4(acc);
+          good &= (mag > zero) & (mag <= huge);
+          m_[i][i] = acc;
+          inv[i] = 1.0 / acc;
+        }
       }
     }
+    for (int l = 0; l < 4; ++l) ok[l] = good[l] != 0;
   }
 
   double d(int lane, int i) const { return m_[i][i][lane]; }
@@ -50,25 +58,28 @@ class SmallLdltLanes {
   // The i-th entry of D in every lane.
   Lanes4 diagonal(int i) const { return m_[i][i]; }
 
-  // SmallLdlt::solve for every lane: lane l of x from lane l of b.
+  // SmallLdlt::solve for every lane: lane l of x from lane l of b. Entry
+  // by entry, as in factor(): each entry's updates in SmallLdlt's order.
   __attribute__((always_inline)) void solve(const Lanes4* b, Lanes4* x) const {
-    Lanes4 y[N];
-    for (int i = 0; i < N; ++i) y[i] = b[i];
-#pragma GCC unroll 16
-    for (int j = 0; j < N; ++j)
-#pragma GCC unroll 16
-      for (int i = j + 1; i < N; ++i) y[i] -= m_[i][j] * y[j];
+    Lanes4 z[N], y[N];  // L z = b, D y = z
     const Lanes4 tiny = splat4(std::numeric_limits<double>::min()), zero = splat4(0.0);
+#pragma GCC unroll 16
     for (int i = 0; i < N; ++i) {
+      Lanes4 acc = b[i];
+#pragma GCC unroll 16
+      for (int j = 0; j < i; ++j) acc -= m_[i][j] * z[j];
+      z[i] = acc;
       const Lanes4 dd = m_[i][i];
       const Lanes4 mag = dd < zero ? -dd : dd;
-      y[i] = mag > tiny ? y[i] / dd : zero;
+      y[i] = mag > tiny ? acc / dd : zero;
     }
 #pragma GCC unroll 16
-    for (int j = N - 1; j >= 0; --j)
+    for (int i = N - 1; i >= 0; --i) {
+      Lanes4 acc = y[i];
 #pragma GCC unroll 16
-      for (int i = 0; i < j; ++i) y[i] -= m_[j][i] * y[j];
-    for (int i = 0; i < N; ++i) x[i] = y[i];
+      for (int j = N - 1; j > i; --j) acc -= m_[j][i] * x[j];
+      x[i] = acc;
+    }
   }
 
   // The same, lane l's solution into x[l][0 .. N - 1].

@@ -14,15 +14,6 @@ namespace {
 // edge, twice inside, three or more on a non-manifold edge. The ring keeps
 // the order of first meeting, which depends on the triangle table alone.
 
-// The other two corners of triangle tri at the corner holding v, in the
-// triangle's order.
-inline void others(const int32_t* tri, int32_t v, int32_t& a, int32_t& b) {
-  const int i = (tri[1] == v) + 2 * (tri[2] == v);
-  static constexpr int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
-  a = tri[next[i]];
-  b = tri[prev[i]];
-}
-
 bool degenerate(const int32_t* t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
 
 // The corners (a, b) of each vertex's triangles (those with a repeated
@@ -45,10 +36,18 @@ std::unique_ptr<int32_t[]> corner_pairs(const Mesh& mesh, std::unique_ptr<Offset
   for (size_t t = 0; t < m; ++t) {
     const int32_t* tri = tris + 3 * t;
     if (degenerate(tri)) continue;
-    for (int i = 0; i < 3; ++i) {
-      int32_t* pair = pairs.get() + 2 * size_t(at[size_t(tri[i])]++);
-      others(tri, tri[i], pair[0], pair[1]);
-    }
+    // At corner i the other two corners in the triangle's order: i + 1,
+    // then i + 2 (mod 3).
+    const int32_t a = tri[0], b = tri[1], c = tri[2];
+    int32_t* pair = pairs.get() + 2 * size_t(at[size_t(a)]++);
+    pair[0] = b;
+    pair[1] = c;
+    pair = pairs.get() + 2 * size_t(at[size_t(b)]++);
+    pair[0] = c;
+    pair[1] = a;
+    pair = pairs.get() + 2 * size_t(at[size_t(c)]++);
+    pair[0] = a;
+    pair[1] = b;
   }
   return pairs;
 }
@@ -67,42 +66,49 @@ template <class Offset>
 void VertexRings::build(const Mesh& mesh) {
   const size_t n = mesh.vertex_count();
   std::unique_ptr<Offset[]> at;
-  const std::unique_ptr<int32_t[]> pairs = corner_pairs(mesh, at);
+  std::unique_ptr<int32_t[]> pairs = corner_pairs(mesh, at);
   // Vertex v's pairs are [at[v - 1], at[v]) now (at[-1] = 0). Around v
-  // each neighbour is counted in per-vertex stamps (seen[w] == v + 1: w
-  // already met around v; uses[w]: how often).
+  // each neighbour w is counted in one mark per vertex: (v + 1) * 4 plus
+  // how often w was met around v (1, 2, or 3 for three or more), so a mark
+  // from another vertex reads as not met yet. Marks are 32 bits where the
+  // tags fit, else 64. The rings take the pairs' place: a vertex's ring
+  // is no longer than its pairs and starts no later, so it is written over
+  // pairs already read.
+  ring_ = std::move(pairs);
+  if (n < (size_t(1) << 30) - 1)
+    rings_from_pairs<uint32_t>(at.get(), n);
+  else
+    rings_from_pairs<uint64_t>(at.get(), n);
+}
+
+template <class Mark, class Offset>
+void VertexRings::rings_from_pairs(const Offset* at, size_t n) {
   start_.resize(n + 1);
   start_[0] = 0;
   boundary_.assign(n, 0);
   nonmanifold_.assign(n, 0);
-  capacity_ = size_t(at[n]) + n;
-  ring_.reset(new int32_t[capacity_]);
-  std::vector<int32_t> seen(n, 0);
-  std::vector<uint8_t> uses(n, 0);
+  int32_t* const out = ring_.get();
+  std::unique_ptr<Mark[]> mark(new Mark[n]());
   size_t size = 0;
   for (size_t v = 0; v < n; ++v) {
-    const int32_t tag = int32_t(v) + 1;
+    const Mark tag = Mark(v + 1) << 2;
     const size_t from = v ? size_t(at[v - 1]) : 0, tris_at = size_t(at[v]) - from;
-    const int32_t* e = pairs.get() + 2 * from;
+    const int32_t* e = out + 2 * from;  // entry k is read before out[size <= 2 from + k] is written
     const size_t first = size;
     int64_t boundary_edges = 0;
-    if (size + 2 * tris_at > capacity_) grow(size + 2 * tris_at);
-    int32_t* out = ring_.get();
     // Each entry is written at the end and kept only where new; its count
-    // starts at 1 or goes up by one (to at most 255), without branches on
-    // the data.
+    // starts at 1 or goes up by one (to at most 3).
     for (size_t k = 0; k < 2 * tris_at; ++k) {
       const int32_t w = e[k];
-      const bool fresh = seen[size_t(w)] != tag;
-      seen[size_t(w)] = tag;
-      const uint8_t u = uses[size_t(w)];
-      uses[size_t(w)] = fresh ? uint8_t(1) : uint8_t(u + (u < 255));
+      const Mark m = mark[size_t(w)], count = m & 3;
+      const bool fresh = (m & ~Mark(3)) != tag;
+      mark[size_t(w)] = tag | (fresh ? Mark(1) : count + (count < 3));
       out[size] = w;
       size += fresh;
     }
     bool thrice = false;
     for (size_t k = first; k != size; ++k) {
-      const uint8_t u = uses[size_t(out[k])];
+      const Mark u = mark[size_t(out[k])] & 3;
       boundary_edges += u == 1;
       thrice |= u > 2;
     }
@@ -117,14 +123,6 @@ void VertexRings::build(const Mesh& mesh) {
     start_[v + 1] = int64_t(size);
     max_valence_ = std::max(max_valence_, distinct);
   }
-}
-
-void VertexRings::grow(size_t wanted) {
-  const size_t capacity = std::max(wanted, 2 * capacity_);
-  std::unique_ptr<int32_t[]> bigger(new int32_t[capacity]);
-  std::copy(ring_.get(), ring_.get() + capacity_, bigger.get());
-  ring_ = std::move(bigger);
-  capacity_ = capacity;
 }
 
 void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s) {

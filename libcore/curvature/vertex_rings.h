@@ -32,11 +32,12 @@ class VertexRings {
  private:
   template <class Offset>
   void build(const Mesh& mesh);
-  void grow(size_t wanted);  // room for at least `wanted` ring entries, the entries kept
+  // The rings from each vertex's corner pairs (vertex_rings.cpp).
+  template <class Mark, class Offset>
+  void rings_from_pairs(const Offset* at, size_t n);
 
   std::vector<int64_t> start_;
-  std::unique_ptr<int32_t[]> ring_;  // the rings, one after another; capacity_ entries
-  size_t capacity_ = 0;
+  std::unique_ptr<int32_t[]> ring_;  // the rings, one after another (in the corner pairs' array)
   size_t max_valence_ = 0;
   std::vector<uint8_t> boundary_;
   std::vector<uint8_t> nonmanifold_;
