@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "principal_lanes.h"
 #include "ring_coordinates.h"
@@ -69,7 +70,7 @@ int points_wanted(FitModel m) {
 // The normal the frame is built on: the mesh's own where usable, else the
 // smallest principal axis of the platelet (whose sign is then arbitrary: the
 // vertex is flagged).
-bool frame_normal(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, Vector3d& n) {
+bool frame_normal(const Mesh& mesh, int32_t v, const RingList& near, Vector3d& n) {
   if (mesh.normals.size() == mesh.points.size()) {
     const float* q = &mesh.normals[3 * size_t(v)];
     n = {q[0], q[1], q[2]};
@@ -94,7 +95,7 @@ bool frame_normal(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near,
 // points that coincide with the vertex carry nothing and are left out. The
 // arrays need room for one point more than `near` holds.
 template <int Stride>
-int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+int local_coordinates(const Mesh& mesh, int32_t v, const RingList& near, const Vector3d& b1,
                       const Vector3d& b2, const Vector3d& n, double* u, double* w, double* d) {
   const int32_t *first = near.data(), *last = near.data() + near.size();
   if (mesh.precise_points.size() == mesh.points.size())
@@ -103,7 +104,7 @@ int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& n
 }
 
 // The same into s's arrays, one point after another.
-int local_coordinates(const Mesh& mesh, int32_t v, const std::vector<int32_t>& near, const Vector3d& b1,
+int local_coordinates(const Mesh& mesh, int32_t v, const RingList& near, const Vector3d& b1,
                       const Vector3d& b2, const Vector3d& n, PlateletPoints& s) {
   if (s.u.size() < near.size() + 1) {
     s.u.resize(near.size() + 1);
@@ -248,7 +249,7 @@ void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int
       alone[l] = true;
       continue;
     }
-    s.lane_rings[l].assign(s.rings.out.begin(), s.rings.out.end());
+    std::swap(s.lane_rings[l], s.rings.out);  // the platelet moves to its lane, no copy
     ring[l] = s.lane_rings[l].data();
     valence[l] = int(s.lane_rings[l].size());
     b1[l] = st[l].b1;

@@ -20,7 +20,7 @@ struct VertexFitScratch {
   RingScratch rings;
   PlateletPoints points;
   PlateletPoints lanes;               // fit_vertices: a group's four platelets side by side (fit_height_lanes)
-  std::vector<int32_t> lane_rings[4];  // fit_vertices: the four platelets' vertices
+  RingList lane_rings[4];  // fit_vertices: the four platelets' vertices
 };
 
 struct VertexFitResult {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "../mesh.h"
@@ -43,11 +44,36 @@ class VertexRings {
   std::vector<uint8_t> nonmanifold_;
 };
 
+// An allocator whose resize() leaves new elements uninitialised: ring lists
+// are written before they are read, and a gather that grows its list per
+// vertex would otherwise clear what it is about to write.
+template <class T>
+struct UninitialisedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitialisedAllocator<U>;
+  };
+  UninitialisedAllocator() = default;
+  template <class U>
+  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+// A list of vertices (a platelet).
+using RingList = std::vector<int32_t, UninitialisedAllocator<int32_t>>;
+
 // Scratch space for gathering rings; one per thread.
 struct RingScratch {
   std::vector<uint32_t> mark;  // per vertex: the stamp of the last gather that saw it
   uint32_t stamp = 0;
-  std::vector<int32_t> out;
+  RingList out;
 };
 
 // The vertices within `count` steps of v (v excluded) into scratch.out,
