@@ -23,18 +23,20 @@ Rgb lerp_map(const Rgb* stops, int count, double t) {
 }
 
 // Blue through white to red: negative, zero, positive.
-Rgb diverging(double t) {
+const Rgb* diverging_stops() {
   static const Rgb stops[] = {{0.23, 0.30, 0.75}, {0.55, 0.69, 1.00}, {0.87, 0.87, 0.87},
                               {0.96, 0.60, 0.48}, {0.71, 0.02, 0.15}};
-  return lerp_map(stops, 5, t);
+  return stops;
 }
+Rgb diverging(double t) { return lerp_map(diverging_stops(), 5, t); }
 
 // Dark violet through green to yellow.
-Rgb sequential(double t) {
+const Rgb* sequential_stops() {
   static const Rgb stops[] = {{0.267, 0.005, 0.329}, {0.230, 0.322, 0.546}, {0.128, 0.567, 0.551},
                               {0.369, 0.789, 0.383}, {0.993, 0.906, 0.144}};
-  return lerp_map(stops, 5, t);
+  return stops;
 }
+Rgb sequential(double t) { return lerp_map(sequential_stops(), 5, t); }
 
 // The p-th and q-th percentiles (p <= q) of v, which is reordered.
 void percentiles(std::vector<float>& v, double p, double q, double* at_p, double* at_q) {
@@ -99,23 +101,92 @@ void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, dou
   }
 }
 
+// The colour of two vertices at once (the width of the baseline's vector
+// registers), each lane with the bits of curvature_colour: the same
+// operations on doubles lane by lane, the map's segment chosen by
+// comparisons (int(t) for t in [0, 4]), the channel rounded as channel()
+// rounds it.
+typedef double Doubles __attribute__((vector_size(16)));
+typedef int64_t Masks __attribute__((vector_size(16)));
+
+inline __attribute__((always_inline)) Doubles splat(double x) { return Doubles{x, x}; }
+
+inline __attribute__((always_inline)) Doubles pick(Masks c, Doubles a, Doubles b) {
+  return (Doubles)((c & (Masks)a) | (~c & (Masks)b));
+}
+
+// Segment i's start and its step to the next stop, per channel.
+struct Segments {
+  Doubles base[3][4], step[3][4];
+  explicit Segments(const Rgb* stops) {
+    for (int i = 0; i < 4; ++i) {
+      const double from[3] = {stops[i].r, stops[i].g, stops[i].b}, to[3] = {stops[i + 1].r, stops[i + 1].g, stops[i + 1].b};
+      for (int k = 0; k < 3; ++k) {
+        base[k][i] = splat(from[k]);
+        step[k][i] = splat(to[k] - from[k]);
+      }
+    }
+  }
+};
+
+inline __attribute__((always_inline)) Doubles segment(const Doubles (&s)[4], Masks m1, Masks m2, Masks m3) {
+  return pick(m3, s[3], pick(m2, s[2], pick(m1, s[1], s[0])));
+}
+
+// channel() for two lanes, as bytes 0 and 4 of out. For 0 <= x < 2^51,
+// x + 2^52 rounds x to an integer in the low bits of its significand, and
+// one less where that rounded up gives int(x); all exact.
+inline __attribute__((always_inline)) void channels2(Doubles c, uint8_t* out) {
+  const Doubles x = 255.0 * c, big = splat(4503599627370496.0);  // 2^52
+  Doubles whole = (x + big) - big;
+  whole -= (Doubles)((Masks)(whole > x) & (Masks)splat(1.0));
+  const Doubles rounded = whole + (Doubles)((Masks)(x - whole >= splat(0.5)) & (Masks)splat(1.0));
+  const Masks bits = (Masks)(rounded + big) & (Masks)(x >= splat(0.0));  // 0 where x < 0 or NaN
+  out[0] = uint8_t(bits[0]);
+  out[4] = uint8_t(bits[1]);
+}
+
+void colour_two(const float* values, const uint8_t* flags, bool absolute, double lo, double hi, double span,
+                const Segments& map, uint8_t* out) {
+  Doubles t = (Doubles{values[0], values[1]} - lo) / span;
+  if (!absolute && !(hi > lo)) t = splat(0.5);
+  // lerp_map: clamp to [0, 1] as std::clamp does, times 4, segment and fraction.
+  const Doubles zero = splat(0.0), one = splat(1.0);
+  t = pick(t < zero, zero, pick(one < t, one, t)) * 4.0;
+  const Masks m1 = t >= 1.0, m2 = t >= 2.0, m3 = t >= 3.0;
+  const Doubles f = t - pick(m3, splat(3.0), pick(m2, splat(2.0), pick(m1, one, zero)));
+  const Masks grey = {-int64_t(!usable(flags[0])), -int64_t(!usable(flags[1]))};
+  for (int k = 0; k < 3; ++k) {
+    const Doubles c = segment(map.base[k], m1, m2, m3) + f * segment(map.step[k], m1, m2, m3);
+    channels2(pick(grey, splat(0.5), c), out + k);
+  }
+  out[3] = out[7] = 255;
+}
+
 void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, double hi, std::vector<uint8_t>& colors) {
   const std::vector<float>& values = curvature_values(c, q);
   const double span = hi > lo ? hi - lo : 1.0;
   colors.resize(4 * values.size());
-  for (size_t v = 0; v < values.size(); ++v) {
-    const double t = (values[v] - lo) / span;
-    Rgb rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
-    if (!usable(c.flags[v])) rgb = {0.5, 0.5, 0.5};
-    uint8_t* out = &colors[4 * v];
-    out[0] = channel(rgb.r);
-    out[1] = channel(rgb.g);
-    out[2] = channel(rgb.b);
-    out[3] = 255;
-  }
+  const bool absolute = q == CurvatureQuantity::Absolute;
+  static const Segments diverging_map(diverging_stops()), sequential_map(sequential_stops());
+  const Segments& map = absolute ? sequential_map : diverging_map;
+  size_t v = 0;
+  for (; v + 2 <= values.size(); v += 2) colour_two(&values[v], &c.flags[v], absolute, lo, hi, span, map, &colors[4 * v]);
+  for (; v < values.size(); ++v) curvature_colour(q, lo, hi, values[v], c.flags[v], &colors[4 * v]);
 }
 
 }  // namespace
+
+void curvature_colour(CurvatureQuantity q, double lo, double hi, float value, uint8_t flags, uint8_t* out) {
+  const double span = hi > lo ? hi - lo : 1.0;
+  const double t = (value - lo) / span;
+  Rgb rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
+  if (!usable(flags)) rgb = {0.5, 0.5, 0.5};
+  out[0] = channel(rgb.r);
+  out[1] = channel(rgb.g);
+  out[2] = channel(rgb.b);
+  out[3] = 255;
+}
 
 void curvature_colour_range(const Mesh& mesh, CurvatureQuantity q, double* lo, double* hi) {
   curvature_values(mesh, q);  // checks that there is curvature

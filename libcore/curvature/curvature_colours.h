@@ -28,4 +28,9 @@ void colour_by_curvature(Mesh& mesh, CurvatureQuantity q);
 void curvature_colours(const VertexCurvature& c, CurvatureQuantity q, std::vector<uint8_t>& colors, double* lo,
                        double* hi);
 
+// The colour (red, green, blue, alpha into out[0 .. 3]) of one vertex with
+// this value and these flags on the range [lo, hi]: the rule the functions
+// above apply to every vertex (four at a time, with the same bits).
+void curvature_colour(CurvatureQuantity q, double lo, double hi, float value, uint8_t flags, uint8_t* out);
+
 }  // namespace isoform

@@ -33,6 +33,38 @@ void store(VertexCurvature& c, size_t v, const VertexFitResult& r) {
   c.flags[v] = r.flags;
 }
 
+// store() for a group of four results, vertices first .. first + 3: the
+// same conversions (each lane's operations are store's), four values to an
+// instruction.
+void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4]) {
+  typedef double Doubles __attribute__((vector_size(32)));
+  typedef float Floats __attribute__((vector_size(16)));
+  typedef int64_t Bits __attribute__((vector_size(32)));
+  auto put = [](float* out, Doubles x) {
+    const Floats f = __builtin_convertvector(x, Floats);
+    std::memcpy(out, &f, sizeof(f));
+  };
+  const PrincipalCurvatures &p0 = r[0].curvature, &p1 = r[1].curvature, &p2 = r[2].curvature,
+                            &p3 = r[3].curvature;
+  const Doubles k1 = {p0.k1, p1.k1, p2.k1, p3.k1}, k2 = {p0.k2, p1.k2, p2.k2, p3.k2};
+  const Bits magnitude = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};  // std::abs: the sign bit cleared
+  put(&c.k1[first], k1);
+  put(&c.k2[first], k2);
+  put(&c.mean[first], 0.5 * (k1 + k2));
+  put(&c.gauss[first], k1 * k2);
+  put(&c.absolute[first], (Doubles)((Bits)k1 & magnitude) + (Doubles)((Bits)k2 & magnitude));
+  // x y z of the four directions one after another: twelve values.
+  auto put_directions = [&](float* out, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& e,
+                            const Eigen::Vector3d& f) {
+    put(out, Doubles{a(0), a(1), a(2), b(0)});
+    put(out + 4, Doubles{b(1), b(2), e(0), e(1)});
+    put(out + 8, Doubles{e(2), f(0), f(1), f(2)});
+  };
+  put_directions(&c.d1[3 * first], p0.d1, p1.d1, p2.d1, p3.d1);
+  put_directions(&c.d2[3 * first], p0.d2, p1.d2, p2.d2, p3.d2);
+  for (int i = 0; i < 4; ++i) c.flags[first + size_t(i)] = r[i].flags;
+}
+
 void count_flags(VertexCurvature& c) {
   CurvatureStats& s = c.stats;
   s.vertices = (long long)c.flags.size();
@@ -98,7 +130,10 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
         fit_seed_vertices(mesh, rings, int32_t(first), count, s, group);
       else
         fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
-      for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
+      if (count == 4 && fitted_normals.empty())
+        store_four(c, first, group);
+      else
+        for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
     }
     progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
   };
