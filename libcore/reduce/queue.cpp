@@ -46,15 +46,24 @@ const std::vector<QueueEntry>& PassQueue::next_pass(const WorkMesh& w, int pass)
   }
   // The faces of the last pass's removals that are still there, sorted; and
   // one bit per face: alive and not made in the last pass.
+  // NOTE: the bits are set in parallel, 64 faces a word; the new faces are
+  // then read off their bits in id order, as the serial loop took them.
+  const size_t words = (w.tri.size() + 63) / 64;
+  old_.assign(words, 0);
+  made_.assign(words, 0);
+  tbb::parallel_for(size_t(0), words, [&](size_t k) {
+    for (size_t f = 64 * k; f < std::min(w.tri.size(), 64 * k + 64); ++f) {
+      if (!w.face_alive[f]) continue;
+      uint64_t& word = w.face_pass[f] == pass - 1 ? made_[k] : old_[k];
+      word |= uint64_t(1) << (f % 64);
+    }
+  });
   fresh_.clear();
-  old_.assign((w.tri.size() + 63) / 64, 0);
-  for (size_t f = 0; f < w.tri.size(); ++f) {
-    if (!w.face_alive[f]) continue;
-    if (w.face_pass[f] == pass - 1)
+  for (size_t k = 0; k < words; ++k)
+    for (uint64_t bits = made_[k]; bits != 0; bits &= bits - 1) {
+      const size_t f = 64 * k + size_t(__builtin_ctzll(bits));
       fresh_.push_back({w.weight[f], int(f), w.face_stamp[f]});
-    else
-      old_[f / 64] |= uint64_t(1) << (f % 64);
-  }
+    }
   tbb::parallel_sort(fresh_.begin(), fresh_.end(), lighter);
   // The older faces keep their order; the changed and removed ones drop out.
   // NOTE: every entry here was current when the last pass began, and a face

@@ -33,7 +33,7 @@ class PassQueue {
 
  private:
   std::vector<QueueEntry> order_, fresh_, merged_;
-  std::vector<uint64_t> old_;  // next_pass's bits
+  std::vector<uint64_t> old_, made_;  // next_pass's bits: old faces, faces of the last pass
 };
 
 // Sets every face's weight (in parallel; each face on its own).

@@ -12,10 +12,13 @@
 #include "reduce.h"
 
 #include <algorithm>
+#include <exception>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <tuple>
+
+#include <tbb/task_group.h>
 
 #include "../curvature/surface_curvature.h"
 #include "../errors.h"
@@ -57,6 +60,39 @@ Mesh prepared_copy(const Mesh& mesh, const Progress& progress, bool* computed) {
   *computed = m.curvature.k1.size() != mesh.vertex_count();
   if (*computed) compute_curvature(m, CurvatureOptions{}, progress);
   return m;
+}
+
+// The working mesh of a checked input: the entry checks (validate.h), the
+// normals and curvature (prepared_copy) and the working structure.
+// NOTE: the overlap check and the preparation only read the input, and both
+// have long serial stretches (the overlap check's grid, the curvature's
+// rings, the working mesh's face lists), so they run side by side, the
+// overlap check on another thread. The other checks come first: the
+// curvature needs a manifold mesh. A bad input is refused as before, by the
+// overlap check's error whatever the preparation did.
+WorkMesh checked_work_mesh(const Mesh& mesh, const Progress& progress, Mesh& work, bool* computed) {
+  reduce::validate_manifold(mesh, "reduce");
+  std::exception_ptr overlap, failed;
+  tbb::task_group group;
+  group.run([&] {
+    try {
+      reduce::validate_no_overlap(mesh, "reduce");
+    } catch (...) {
+      overlap = std::current_exception();
+    }
+  });
+  WorkMesh w;
+  try {
+    work = prepared_copy(mesh, progress, computed);
+    progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
+    w = reduce::build_work_mesh(work);
+  } catch (...) {
+    failed = std::current_exception();
+  }
+  group.wait();
+  if (overlap) std::rethrow_exception(overlap);
+  if (failed) std::rethrow_exception(failed);
+  return w;
 }
 
 void count_refusal(Outcome o, ReduceRefusals& r) {
@@ -154,14 +190,15 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
 ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress& progress) {
   check_options(options);
   if (options.manifold_parts_only) return reduce::reduce_manifold_parts(mesh, options, progress);
-  reduce::validate_input(mesh, "reduce");
   ReduceStats stats;
   stats.triangles_before = stats.triangles_after = (long long)mesh.triangle_count();
   stats.vertices_before = stats.vertices_after = (long long)mesh.vertex_count();
-  if (options.keep_fraction >= 1.0 || mesh.triangle_count() == 0) return stats;  // an unchanged copy
-  Mesh work = prepared_copy(mesh, progress, &stats.curvature_computed);
-  progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
-  WorkMesh w = reduce::build_work_mesh(work);
+  if (options.keep_fraction >= 1.0 || mesh.triangle_count() == 0) {
+    reduce::validate_input(mesh, "reduce");
+    return stats;  // an unchanged copy
+  }
+  Mesh work;
+  WorkMesh w = checked_work_mesh(mesh, progress, work, &stats.curvature_computed);
   const long long target = (long long)std::ceil(options.keep_fraction * double(mesh.triangle_count()) - 1e-9);
   run_passes(w, options, target, progress, stats);
   reduce::write_back(w, work.precise_points.size() == work.points.size(), work);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/parallel_for.h>
+
 namespace isoform::reduce {
 
 // Closest point on a triangle by its Voronoi regions (vertices, edges, face).
@@ -39,13 +41,14 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
   if (!active()) return;
   const size_t nv = w.pos.size(), nt = w.tri.size();
   original_.resize(nv);
-  for (size_t v = 0; v < nv; ++v) original_[v].x = w.pos[v];
+  tbb::parallel_for(size_t(0), nv, [&](size_t v) { original_[v].x = w.pos[v]; });
   original_tri_ = w.tri;
   face_start_.assign(nv + 1, 0);
   for (size_t v = 0; v < nv; ++v) face_start_[v + 1] = face_start_[v] + int(w.vfaces[v].size());
   face_list_.resize(size_t(face_start_[nv]));
-  for (size_t v = 0; v < nv; ++v)
+  tbb::parallel_for(size_t(0), nv, [&](size_t v) {
     std::copy(w.vfaces[v].begin(), w.vfaces[v].end(), face_list_.begin() + face_start_[v]);
+  });
   head_.assign(nt, -1);
   next_.assign(nv, -1);
   touched_.assign(nv, 0);

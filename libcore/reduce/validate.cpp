@@ -205,17 +205,30 @@ bool check_overlaps(const Mesh& mesh, const Sink& sink) {
   return true;
 }
 
+// Every check but the overlap one; false when sink asked to stop.
+bool manifold_offences(const Mesh& mesh, const std::string& what, const Sink& sink) {
+  check_indices(mesh, what);
+  return check_points(mesh, sink) && check_triangles(mesh, sink) && check_edges(mesh, sink) &&
+         check_vertex_fans(mesh, sink);
+}
+
+Sink throw_first(const std::string& what) {
+  return [what](const Offence& o) -> bool { throw InvalidArgument(what + ": " + o.problem); };
+}
+
 }  // namespace
 
 void find_offences(const Mesh& mesh, const std::string& what, const Sink& sink) {
-  check_indices(mesh, what);
-  const bool go_on = check_points(mesh, sink) && check_triangles(mesh, sink) && check_edges(mesh, sink) &&
-                     check_vertex_fans(mesh, sink) && check_overlaps(mesh, sink);
-  (void)go_on;
+  if (manifold_offences(mesh, what, sink)) check_overlaps(mesh, sink);
 }
 
+void validate_manifold(const Mesh& mesh, const std::string& what) { manifold_offences(mesh, what, throw_first(what)); }
+
+void validate_no_overlap(const Mesh& mesh, const std::string& what) { check_overlaps(mesh, throw_first(what)); }
+
 void validate_input(const Mesh& mesh, const std::string& what) {
-  find_offences(mesh, what, [&](const Offence& o) -> bool { throw InvalidArgument(what + ": " + o.problem); });
+  validate_manifold(mesh, what);
+  validate_no_overlap(mesh, what);
 }
 
 }  // namespace isoform::reduce

@@ -29,4 +29,11 @@ void find_offences(const Mesh& mesh, const std::string& what, const std::functio
 // Throws InvalidArgument "<what>: <problem>" for the first violation.
 void validate_input(const Mesh& mesh, const std::string& what);
 
+// The same in two steps: every check but the overlap one (after it the mesh
+// is a manifold, consistently oriented triangulation with finite points, so
+// work that is local to each vertex may start), then the overlap check.
+// validate_input is the first, then the second.
+void validate_manifold(const Mesh& mesh, const std::string& what);
+void validate_no_overlap(const Mesh& mesh, const std::string& what);
+
 }  // namespace isoform::reduce

@@ -3,22 +3,45 @@
 
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "../topology.h"
 #include "queue.h"
 
 namespace isoform::reduce {
+namespace {
+
+// A vertex is on the boundary when one of its edges has one triangle: with
+// consistent orientation, a directed edge v->x without its reverse x->v.
+bool on_boundary(const WorkMesh& w, int v) {
+  for (int f : w.vfaces[size_t(v)]) {
+    const int i = w.face_with_vertex_index(f, v);
+    const int next = w.tri[size_t(f)][size_t((i + 1) % 3)];
+    bool reverse = false;
+    for (int g : w.vfaces[size_t(v)]) {
+      const int j = w.face_with_vertex_index(g, v);
+      if (w.tri[size_t(g)][size_t((j + 2) % 3)] == next) reverse = true;
+    }
+    if (!reverse) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 WorkMesh build_work_mesh(const Mesh& mesh) {
   WorkMesh w;
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   const bool precise = mesh.precise_points.size() == 3 * nv;
   w.pos.resize(nv);
-  for (size_t v = 0; v < nv; ++v)
+  tbb::parallel_for(size_t(0), nv, [&](size_t v) {
     for (int k = 0; k < 3; ++k)
       w.pos[v][k] = precise ? mesh.precise_points[3 * v + k] : double(mesh.points[3 * v + k]);
+  });
   w.tri.resize(nt);
-  for (size_t t = 0; t < nt; ++t)
+  tbb::parallel_for(size_t(0), nt, [&](size_t t) {
     for (int k = 0; k < 3; ++k) w.tri[t][size_t(k)] = mesh.triangles[3 * t + k];
+  });
   w.face_alive.assign(nt, 1);
   w.face_stamp.assign(nt, 0);
   w.face_pass.assign(nt, 0);
@@ -31,21 +54,8 @@ WorkMesh build_work_mesh(const Mesh& mesh) {
   for (size_t t = 0; t < nt; ++t)
     for (int v : w.tri[t]) w.vfaces[size_t(v)].push_back(int(t));
   w.vertex_alive.assign(nv, 1);
-  // A vertex is on the boundary when one of its edges has one triangle: with
-  // consistent orientation, a directed edge v->x without its reverse x->v.
   w.boundary.assign(nv, 0);
-  for (size_t v = 0; v < nv; ++v) {
-    for (int f : w.vfaces[v]) {
-      const int i = w.face_with_vertex_index(f, int(v));
-      const int next = w.tri[size_t(f)][size_t((i + 1) % 3)];
-      bool reverse = false;
-      for (int g : w.vfaces[v]) {
-        const int j = w.face_with_vertex_index(g, int(v));
-        if (w.tri[size_t(g)][size_t((j + 2) % 3)] == next) reverse = true;
-      }
-      if (!reverse) w.boundary[v] = 1;
-    }
-  }
+  tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = on_boundary(w, int(v)) ? 1 : 0; });
   const VertexCurvature& c = mesh.curvature;
   w.absolute.resize(nv);
   for (size_t v = 0; v < nv; ++v) w.absolute[v] = c.absolute[v];
