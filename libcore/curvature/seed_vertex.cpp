@@ -109,20 +109,6 @@ VertexFitResult fit_seed_vertex(const Mesh& mesh, const VertexRings& rings, int3
 
 namespace {
 
-// The frame of four vertices from their unit normals, as Eigen's
-// unitOrthogonal and cross give it: b1 = (-y, x, 0) / |(x, y)| unless x and
-// y are both much smaller than z (|.| <= 1e-12 |z|), then (0, -z, y) /
-// |(y, z)|; b2 = n x b1.
-ISOFORM_LANES_INLINE void frame_lanes(const Vec3Lanes& n, Vec3Lanes& b1, Vec3Lanes& b2) {
-  const Lanes4 zero = splat4(0.0), one = splat4(1.0), limit = abs4(n.z) * splat4(1e-12);
-  const Mask4 near_z = (abs4(n.x) <= limit) & (abs4(n.y) <= limit);
-  const Lanes4 inv_xy = one / sqrt4(n.x * n.x + n.y * n.y), inv_yz = one / sqrt4(n.y * n.y + n.z * n.z);
-  b1.x = select4(near_z, zero, -n.y * inv_xy);
-  b1.y = select4(near_z, -n.z * inv_yz, n.x * inv_xy);
-  b1.z = select4(near_z, n.y * inv_yz, zero);
-  b2 = lanes_detail::cross(n, b1);
-}
-
 // seed_fit for four point sets side by side (point j of lane l at
 // u[j][l]; lanes with fewer points padded with zeros, which add exactly 0
 // to every sum and leave the largest radius as it is). ok[l] false where

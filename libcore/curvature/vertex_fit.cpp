@@ -123,7 +123,7 @@ struct Start {
 };
 
 bool start_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, CurvatureMethod method, int extra_rings,
-                  VertexFitScratch& s, VertexFitResult& r, Start& st) {
+                  VertexFitScratch& s, VertexFitResult& r, Start& st, bool tangents = true) {
   if (rings.valence(v) == 0) {
     r.flags = kCurvatureIsolated;
     return false;
@@ -139,8 +139,10 @@ bool start_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v, Curvatu
   }
   gather_rings(rings, v, st.plan.rings, s.rings);
   if (!frame_normal(mesh, v, s.rings.out, st.n)) r.flags |= kCurvatureNormalRepaired;
-  st.b1 = st.n.unitOrthogonal();
-  st.b2 = st.n.cross(st.b1);
+  if (tangents) {  // else the caller finds b1, b2 (frame_lanes gives the same bits)
+    st.b1 = st.n.unitOrthogonal();
+    st.b2 = st.n.cross(st.b1);
+  }
   return true;
 }
 
@@ -243,7 +245,7 @@ void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int
     n[l] = Vector3d::UnitZ();
     if (l >= count) continue;
     out[l] = VertexFitResult{};
-    if (!start_vertex(mesh, rings, vertex[l], method, extra_rings, s, out[l], st[l])) continue;
+    if (!start_vertex(mesh, rings, vertex[l], method, extra_rings, s, out[l], st[l], false)) continue;
     // Fewer neighbours than the model wants: fewer points too.
     if (s.rings.out.size() < size_t(wanted)) {
       alone[l] = true;
@@ -252,9 +254,17 @@ void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int
     std::swap(s.lane_rings[l], s.rings.out);  // the platelet moves to its lane, no copy
     ring[l] = s.lane_rings[l].data();
     valence[l] = int(s.lane_rings[l].size());
-    b1[l] = st[l].b1;
-    b2[l] = st[l].b2;
     n[l] = st[l].n;
+  }
+  // The tangents of the lanes with points, four at a time.
+  {
+    Vec3Lanes e1, e2;
+    frame_lanes(vec3_lanes(n), e1, e2);
+    for (int l = 0; l < 4; ++l)
+      if (valence[l] > 0) {
+        b1[l] = {e1.x[l], e1.y[l], e1.z[l]};
+        b2[l] = {e2.x[l], e2.y[l], e2.z[l]};
+      }
   }
   const int widest = std::max(std::max(valence[0], valence[1]), std::max(valence[2], valence[3]));
   if (widest == 0) {
