@@ -1,8 +1,11 @@
-// Storage for the per-brick tables of one contour: large blocks, filled in
-// turn and dropped whole. Blocks are allocated without being zeroed and are
-// large enough that the allocator maps them from (and returns them to) the
-// system, so dropping a store lowers the resident set at once, which many
-// small per-brick vectors would not.
+// Storage for the per-brick tables of one contour: blocks filled in turn
+// and dropped whole. Blocks are allocated without being zeroed. The first
+// block of a store is small and each next one twice the last, up to 64 MB:
+// a small contour touches little fresh memory (its blocks come from, and go
+// back to, the allocator's heap, which later calls reuse), and a large one
+// soon gets blocks large enough that the allocator maps them from (and
+// returns them to) the system, so dropping a store lowers the resident set
+// at once, which many small per-brick vectors would not.
 #pragma once
 
 #include <algorithm>
@@ -28,17 +31,23 @@ class BlockStore {
   void clear() {
     blocks_.clear();
     used_ = capacity_ = populated_ = 0;
+    next_block_ = kFirstBlock;
   }
 
  private:
+  static constexpr size_t kFirstBlock = size_t(256) << 10;
   static constexpr size_t kBlock = size_t(64) << 20;  // above any mmap threshold
   static constexpr size_t kAhead = size_t(2) << 20;   // pages made present at a time
   void* allocate(size_t bytes) {
     bytes = (bytes + 15) & ~size_t(15);
     if (used_ + bytes > capacity_) {
-      capacity_ = bytes > kBlock ? bytes : kBlock;
+      capacity_ = std::max(bytes, next_block_);
+      next_block_ = std::min(2 * next_block_, kBlock);
       blocks_.emplace_back(new char[capacity_]);
       used_ = populated_ = 0;
+      // Blocks below the largest size may be pages the heap already has:
+      // they are written as they are (fresh ones fault in a page at a time).
+      if (capacity_ < kBlock) populated_ = capacity_;
     }
     char* block = blocks_.back().get();
     if (used_ + bytes > populated_) {
@@ -55,6 +64,7 @@ class BlockStore {
 
   std::vector<std::unique_ptr<char[]>> blocks_;
   size_t used_ = 0, capacity_ = 0, populated_ = 0;
+  size_t next_block_ = kFirstBlock;  // the size of the next block
 };
 
 // One thread's stores: vertex data (points, gradients) is dropped before
