@@ -57,8 +57,11 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
       }
     }
   }
+  // The triangles of one fan start joined under its first triangle (fan
+  // links join them below anyway): the smallest of their part, as every
+  // root is, so the links need no find.
   root_.resize(nt);
-  for (size_t t = 0; t < nt; ++t) root_[t] = int32_t(t);
+  for (size_t t = 0; t < nt; ++t) root_[t] = t > 0 && links[t - 1] ? root_[t - 1] : int32_t(t);
   auto find = [&](int32_t x) {
     while (root_[size_t(x)] != x) x = root_[size_t(x)] = root_[size_t(root_[size_t(x)])];
     return x;
@@ -92,8 +95,6 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     neighbours[here] = int32_t(first_triangle) + int32_t(t) + 1;
     neighbours[there] = int32_t(first_triangle) + int32_t(t);
     counts.inconsistent += runs_up(here) == runs_up(there);
-    const int32_t ra = find(int32_t(t)), rb = find(int32_t(t) + 1);
-    if (ra != rb) root_[size_t(std::max(ra, rb))] = std::min(ra, rb);
   }
   if (seams != seams_end) throw std::logic_error("contour: fewer seam edges than the brick counted");
   total.add(counts);
