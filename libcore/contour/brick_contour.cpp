@@ -450,14 +450,13 @@ void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
       }
     }
   }
+  // Appended one by one: a resize would zero them first, out of line.
   std::vector<int32_t>& tri = out_->triangles;
   const size_t at = tri.size();
-  tri.resize(at + 3 * size_t(n - 2));
-  int32_t* out = &tri[at];
-  for (int m = best + 1; m + 1 < best + n; ++m, out += 3) {
-    out[0] = ids[best];
-    out[1] = ids[m < n ? m : m - n];
-    out[2] = ids[m + 1 < n ? m + 1 : m + 1 - n];
+  for (int m = best + 1; m + 1 < best + n; ++m) {
+    tri.push_back(ids[best]);
+    tri.push_back(ids[m < n ? m : m - n]);
+    tri.push_back(ids[m + 1 < n ? m + 1 : m + 1 - n]);
   }
   // Consecutive triangles share the diagonal (apex, ids[m + 1]): edge 2 of
   // the one, edge 0 of the next; the polygon's sides are looked up. The
