@@ -7,6 +7,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "../errors.h"
 #include "cell_polygons.h"
 #include "cell_table.h"
@@ -17,6 +21,30 @@ namespace isoform {
 
 namespace {
 constexpr double kNearSample = 1e-3;  // fraction of an edge
+
+// Bit i set when f[i] >= above_at, for i < n (at most 64); zero is set when
+// some f[i] == equal_to. Four samples at a time where SSE is there: the
+// same comparisons, so the same bits.
+uint64_t row_mask(const float* f, int n, float above_at, float equal_to, bool& zero) {
+  uint64_t above = 0;
+  int i = 0;
+#if defined(__SSE2__)
+  const __m128 at = _mm_set1_ps(above_at), eq = _mm_set1_ps(equal_to);
+  __m128 any_equal = _mm_setzero_ps();
+  for (; i + 4 <= n; i += 4) {
+    const __m128 x = _mm_loadu_ps(f + i);
+    above |= uint64_t(_mm_movemask_ps(_mm_cmpge_ps(x, at))) << i;
+    any_equal = _mm_or_ps(any_equal, _mm_cmpeq_ps(x, eq));
+  }
+  zero |= _mm_movemask_ps(any_equal) != 0;
+#endif
+  for (; i < n; ++i) {
+    above |= uint64_t(f[i] >= above_at) << i;
+    zero |= f[i] == equal_to;
+  }
+  return above;
+}
+
 }  // namespace
 
 uint64_t edge_key(int x, int y, int z, int slot) {
@@ -78,11 +106,8 @@ bool BrickContourer::prepare(const Brick& brick) {
       const size_t row = brick.at(0, j, k);
       const float* f = &brick.samples[row];
       // Above: f - iso > 0, or f = iso, which moves up (Remark 3.8).
-      uint64_t above = 0, undefined = 0;
-      for (int i = 0; i < n_[0]; ++i) {
-        above |= uint64_t(f[i] >= iso_above_) << i;
-        zero |= f[i] == iso_float_;
-      }
+      uint64_t undefined = 0;
+      uint64_t above = row_mask(f, n_[0], iso_above_, iso_float_, zero);
       if (!all_defined_) {
         const uint8_t* def = &brick.defined[row];
         for (int i = 0; i < n_[0]; ++i) undefined |= uint64_t(def[i] == 0) << i;
@@ -425,14 +450,13 @@ void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
       }
     }
   }
+  // Appended one by one: a resize would zero them first, out of line.
   std::vector<int32_t>& tri = out_->triangles;
   const size_t at = tri.size();
-  tri.resize(at + 3 * size_t(n - 2));
-  int32_t* out = &tri[at];
-  for (int m = best + 1; m + 1 < best + n; ++m, out += 3) {
-    out[0] = ids[best];
-    out[1] = ids[m < n ? m : m - n];
-    out[2] = ids[m + 1 < n ? m + 1 : m + 1 - n];
+  for (int m = best + 1; m + 1 < best + n; ++m) {
+    tri.push_back(ids[best]);
+    tri.push_back(ids[m < n ? m : m - n]);
+    tri.push_back(ids[m + 1 < n ? m + 1 : m + 1 - n]);
   }
   // Consecutive triangles share the diagonal (apex, ids[m + 1]): edge 2 of
   // the one, edge 0 of the next; the polygon's sides are looked up. The

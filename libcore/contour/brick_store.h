@@ -1,8 +1,10 @@
-// Storage for the per-brick tables of one contour: large blocks, filled in
-// turn and dropped whole. Blocks are allocated without being zeroed and are
-// large enough that the allocator maps them from (and returns them to) the
-// system, so dropping a store lowers the resident set at once, which many
-// small per-brick vectors would not.
+// Storage for the per-brick tables of one contour: blocks filled in turn
+// and dropped whole, each mapped from the system and given back to it when
+// dropped (fresh_memory.h), so dropping a store lowers the resident set at
+// once, which many small per-brick vectors would not. The first block of a
+// store is small and each next one twice the last, up to 64 MB: a small
+// contour maps and touches little memory, a large one soon gets large
+// blocks.
 #pragma once
 
 #include <algorithm>
@@ -28,19 +30,22 @@ class BlockStore {
   void clear() {
     blocks_.clear();
     used_ = capacity_ = populated_ = 0;
+    next_block_ = kFirstBlock;
   }
 
  private:
-  static constexpr size_t kBlock = size_t(64) << 20;  // above any mmap threshold
+  static constexpr size_t kFirstBlock = size_t(1) << 20;
+  static constexpr size_t kBlock = size_t(64) << 20;
   static constexpr size_t kAhead = size_t(2) << 20;   // pages made present at a time
   void* allocate(size_t bytes) {
     bytes = (bytes + 15) & ~size_t(15);
     if (used_ + bytes > capacity_) {
-      capacity_ = bytes > kBlock ? bytes : kBlock;
-      blocks_.emplace_back(new char[capacity_]);
+      capacity_ = std::max(bytes, next_block_);
+      next_block_ = std::min(2 * next_block_, kBlock);
+      blocks_.push_back(std::make_unique<SystemBlock>(capacity_));
       used_ = populated_ = 0;
     }
-    char* block = blocks_.back().get();
+    char* block = blocks_.back()->data();
     if (used_ + bytes > populated_) {
       // The pages about to be written, and the next few, in one call
       // (fresh_memory.h), on this thread.
@@ -53,8 +58,9 @@ class BlockStore {
     return at;
   }
 
-  std::vector<std::unique_ptr<char[]>> blocks_;
+  std::vector<std::unique_ptr<SystemBlock>> blocks_;
   size_t used_ = 0, capacity_ = 0, populated_ = 0;
+  size_t next_block_ = kFirstBlock;  // the size of the next block
 };
 
 // One thread's stores: vertex data (points, gradients) is dropped before

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstddef>
 #include <stdexcept>
 
 namespace isoform {
@@ -13,22 +14,21 @@ int next(int i) { return i == 2 ? 0 : i + 1; }
 }  // namespace
 
 int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt,
-                           const uint8_t* shared, const int32_t* final_vertex, int64_t first_triangle,
-                           int32_t* neighbours, int32_t* parts, TopologyCounts& total, SeamEdge* seams,
-                           size_t seam_count) {
+                           size_t vertex_count, const uint8_t* shared, const int32_t* final_vertex,
+                           int64_t first_triangle, int32_t* neighbours, int32_t* parts, TopologyCounts& total,
+                           SeamEdge* seams, size_t seam_count) {
   SeamEdge* const seams_end = seams + seam_count;
   TopologyCounts counts;  // local, so that it stays in registers
   // Swapping a triangle's last two vertices turns its edge i into edge 2 - i.
   const auto oriented = [&](int e) { return reversed ? 2 - e : e; };
-  // The triangle edges of each undirected local edge, grouped in a hash
-  // table: compute_neighbours finds the same groups by its vertex scan.
-  // Fan links pair the edges inside a fan directly (further below).
-  size_t size = 16;
-  while (size < 3 * nt) size *= 2;
-  const int shift = 64 - __builtin_ctzll(size);
-  // The table stays empty between calls: only the slots used are cleared.
-  if (table_.size() < size) table_.assign(size, Slot{kEmpty, -1, -1});
-  used_.clear();
+  // The triangle edges of each undirected local edge, grouped under its
+  // smaller vertex: a short list per vertex (its sides on the few cell faces
+  // around its grid edge, and a spoke), the groups kept in the order their
+  // edges are first met. compute_neighbours finds the same groups by its
+  // vertex scan. Fan links pair the edges inside a fan directly (below).
+  if (first_.size() < vertex_count) first_.resize(vertex_count);
+  std::fill(first_.begin(), first_.begin() + std::ptrdiff_t(vertex_count), -1);
+  groups_.clear();
   for (size_t t = 0; t < nt; ++t) {
     int linked = 0;
     if (links[t]) linked |= 1 << oriented(links[t] & 3);
@@ -45,20 +45,23 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
                     (uint64_t(3 * first_triangle) + at) << 1 | uint64_t(fa < fb)};
         continue;
       }
-      const uint64_t key = a < b ? (uint64_t(a) << 32) | uint64_t(b) : (uint64_t(b) << 32) | uint64_t(a);
-      size_t h = size_t((key * 0x9E3779B97F4A7C15ull) >> shift);
-      while (table_[h].key != kEmpty && table_[h].key != key) h = (h + 1) & (size - 1);
-      Slot& slot = table_[h];
-      if (slot.key == kEmpty) {
-        slot = Slot{key, int32_t(at), -1};
-        used_.push_back(uint32_t(h));
+      const int32_t lo = std::min(a, b), hi = std::max(a, b);
+      int32_t g = first_[size_t(lo)];
+      while (g >= 0 && groups_[size_t(g)].other != hi) g = groups_[size_t(g)].next;
+      if (g < 0) {
+        groups_.push_back(Group{hi, int32_t(at), -1, first_[size_t(lo)]});
+        first_[size_t(lo)] = int32_t(groups_.size() - 1);
       } else {
-        slot.second = slot.second == -1 ? int32_t(at) : kMore;
+        Group& group = groups_[size_t(g)];
+        group.second = group.second == -1 ? int32_t(at) : kMore;
       }
     }
   }
+  // The triangles of one fan start joined under its first triangle (fan
+  // links join them below anyway): the smallest of their part, as every
+  // root is, so the links need no find.
   root_.resize(nt);
-  for (size_t t = 0; t < nt; ++t) root_[t] = int32_t(t);
+  for (size_t t = 0; t < nt; ++t) root_[t] = t > 0 && links[t - 1] ? root_[t - 1] : int32_t(t);
   auto find = [&](int32_t x) {
     while (root_[size_t(x)] != x) x = root_[size_t(x)] = root_[size_t(root_[size_t(x)])];
     return x;
@@ -67,8 +70,7 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     const int32_t t = e / 3;
     return tris[e] < tris[3 * t + next(e - 3 * t)];
   };
-  for (uint32_t h : used_) {
-    Slot& slot = table_[h];
+  for (const Group& slot : groups_) {
     ++counts.edges;
     if (slot.second == -1) {
       ++counts.boundary;
@@ -82,7 +84,6 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     } else {
       ++counts.nonmanifold;
     }
-    slot = Slot{kEmpty, -1, -1};
   }
   for (size_t t = 0; t + 1 < nt; ++t) {
     if (!links[t]) continue;
@@ -92,8 +93,6 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     neighbours[here] = int32_t(first_triangle) + int32_t(t) + 1;
     neighbours[there] = int32_t(first_triangle) + int32_t(t);
     counts.inconsistent += runs_up(here) == runs_up(there);
-    const int32_t ra = find(int32_t(t)), rb = find(int32_t(t) + 1);
-    if (ra != rb) root_[size_t(std::max(ra, rb))] = std::min(ra, rb);
   }
   if (seams != seams_end) throw std::logic_error("contour: fewer seam edges than the brick counted");
   total.add(counts);

@@ -48,30 +48,30 @@ class BrickTopology {
   // tris: the brick's oriented triangles over local vertices; links: their
   // fan links (brick_contour.h), edges numbered as the contour wrote them
   // (reversed: tris has each triangle's last two vertices swapped since);
-  // shared: 1 per local vertex that other bricks may use; final_vertex: the
-  // final index of each local vertex; first_triangle: the global index of
-  // the brick's triangle 0. Writes the neighbours of local edges into
-  // neighbours (3 per triangle; seam edges are left for seams.h), writes the
-  // seam edges to seams (exactly seam_count of them, BrickMesh::seam_count:
-  // std::logic_error otherwise), and writes into
-  // parts the brick-local part of each triangle over local edges (numbered
-  // by first triangle). Returns the number of local parts.
-  int32_t run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, const uint8_t* shared,
-              const int32_t* final_vertex, int64_t first_triangle, int32_t* neighbours, int32_t* parts,
-              TopologyCounts& counts, SeamEdge* seams, size_t seam_count);
+  // vertex_count: the brick's local vertices; shared: 1 per local vertex
+  // that other bricks may use; final_vertex: the final index of each local
+  // vertex; first_triangle: the global index of the brick's triangle 0.
+  // Writes the neighbours of local edges into neighbours (3 per triangle;
+  // seam edges are left for seams.h), writes the seam edges to seams
+  // (exactly seam_count of them, BrickMesh::seam_count: std::logic_error
+  // otherwise), and writes into parts the brick-local part of each
+  // triangle over local edges (numbered by first triangle). Returns the
+  // number of local parts.
+  int32_t run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, size_t vertex_count,
+              const uint8_t* shared, const int32_t* final_vertex, int64_t first_triangle, int32_t* neighbours,
+              int32_t* parts, TopologyCounts& counts, SeamEdge* seams, size_t seam_count);
 
  private:
-  // One undirected local edge: its first two triangle edges; second is -1
-  // while it has one, kMore once it has more than two.
-  struct Slot {
-    uint64_t key;  // (smaller local vertex << 32) | larger; kEmpty if unused
-    int32_t first, second;
+  // One undirected local edge, listed under its smaller vertex: the larger
+  // vertex, its first two triangle edges (second is -1 while it has one,
+  // kMore once it has more than two) and the next edge of the same list.
+  struct Group {
+    int32_t other, first, second, next;
   };
-  static constexpr uint64_t kEmpty = ~uint64_t(0);
   static constexpr int32_t kMore = -2;
 
-  std::vector<Slot> table_;     // open addressing, a power of two long, kEmpty between calls
-  std::vector<uint32_t> used_;  // the slots this brick filled, in order
+  std::vector<int32_t> first_;  // per local vertex: its list's first group, or -1
+  std::vector<Group> groups_;   // in the order the edges are first met
   std::vector<int32_t> root_;
 };
 

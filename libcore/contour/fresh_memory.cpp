@@ -40,4 +40,26 @@ void populate_pages(void* p, size_t bytes, bool parallel) {
 #endif
 }
 
+SystemBlock::SystemBlock(size_t bytes) : bytes_(bytes) {
+#if defined(__linux__)
+  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p != MAP_FAILED) {
+    data_ = static_cast<char*>(p);
+    mapped_ = true;
+    return;
+  }
+#endif
+  data_ = new char[bytes];
+}
+
+SystemBlock::~SystemBlock() {
+#if defined(__linux__)
+  if (mapped_) {
+    (void)munmap(data_, bytes_);
+    return;
+  }
+#endif
+  delete[] data_;
+}
+
 }  // namespace isoform

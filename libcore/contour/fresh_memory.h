@@ -17,6 +17,25 @@ namespace isoform {
 // when parallel is true.
 void populate_pages(void* p, size_t bytes, bool parallel = true);
 
+// Bytes mapped from the system and given back to it when destroyed, at any
+// size (Linux: an anonymous mapping; the allocator would keep blocks below
+// its mapping threshold in its heap, resident after they are freed).
+// Elsewhere, or when the mapping fails, an ordinary allocation. Not
+// initialised as far as the caller is concerned.
+class SystemBlock {
+ public:
+  explicit SystemBlock(size_t bytes);
+  ~SystemBlock();
+  SystemBlock(const SystemBlock&) = delete;
+  SystemBlock& operator=(const SystemBlock&) = delete;
+  char* data() const { return data_; }
+
+ private:
+  char* data_ = nullptr;
+  size_t bytes_ = 0;
+  bool mapped_ = false;
+};
+
 // n values, not initialised, their pages present.
 template <class T>
 std::unique_ptr<T[]> fresh_array(size_t n) {

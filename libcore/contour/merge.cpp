@@ -242,9 +242,10 @@ void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const Verte
   for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
   const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
-  part_counts[b] = s.topology.run(tris, bm.fan_links, orient.reverse, bm.triangle_count, s.shared.data(),
-                                  vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
-                                  &mesh.parts[t0], s.counts, seams + o.seam[b], bm.seam_count);
+  part_counts[b] = s.topology.run(tris, bm.fan_links, orient.reverse, bm.triangle_count, bm.vertex_count,
+                                  s.shared.data(), vt.final_index.get() + o.vertex[b], int64_t(t0),
+                                  &mesh.neighbours[3 * t0], &mesh.parts[t0], s.counts, seams + o.seam[b],
+                                  bm.seam_count);
 }
 
 void sum_contour_stats(const std::vector<BrickMesh>& bricks, ContourStats& c) {
