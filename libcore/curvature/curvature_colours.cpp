@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../errors.h"
+#include "vector_level.h"
 
 namespace isoform {
 namespace {
@@ -101,67 +102,106 @@ void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, dou
   }
 }
 
-// The colour of two vertices at once (the width of the baseline's vector
-// registers), each lane with the bits of curvature_colour: the same
-// operations on doubles lane by lane, the map's segment chosen by
-// comparisons (int(t) for t in [0, 4]), the channel rounded as channel()
-// rounds it.
-typedef double Doubles __attribute__((vector_size(16)));
-typedef int64_t Masks __attribute__((vector_size(16)));
+// The colour of W vertices at once (2: the baseline's vector registers, 4:
+// AVX's), each lane with the bits of curvature_colour: the same operations
+// on doubles lane by lane, the map's segment chosen by comparisons (int(t)
+// for t in [0, 4]), the channel rounded as channel() rounds it.
+template <int W>
+struct Lanes {
+  typedef double D __attribute__((vector_size(8 * W)));
+  typedef int64_t M __attribute__((vector_size(8 * W)));
+};
 
-inline __attribute__((always_inline)) Doubles splat(double x) { return Doubles{x, x}; }
+template <class D>
+inline __attribute__((always_inline)) D splat(double x) {
+  return D{} + x;
+}
 
-inline __attribute__((always_inline)) Doubles pick(Masks c, Doubles a, Doubles b) {
-  return (Doubles)((c & (Masks)a) | (~c & (Masks)b));
+template <class D, class M>
+inline __attribute__((always_inline)) D pick(M c, D a, D b) {
+  return (D)((c & (M)a) | (~c & (M)b));
 }
 
 // Segment i's start and its step to the next stop, per channel.
 struct Segments {
-  Doubles base[3][4], step[3][4];
+  double base[3][4], step[3][4];
   explicit Segments(const Rgb* stops) {
     for (int i = 0; i < 4; ++i) {
       const double from[3] = {stops[i].r, stops[i].g, stops[i].b}, to[3] = {stops[i + 1].r, stops[i + 1].g, stops[i + 1].b};
       for (int k = 0; k < 3; ++k) {
-        base[k][i] = splat(from[k]);
-        step[k][i] = splat(to[k] - from[k]);
+        base[k][i] = from[k];
+        step[k][i] = to[k] - from[k];
       }
     }
   }
 };
 
-inline __attribute__((always_inline)) Doubles segment(const Doubles (&s)[4], Masks m1, Masks m2, Masks m3) {
-  return pick(m3, s[3], pick(m2, s[2], pick(m1, s[1], s[0])));
+template <class D, class M>
+inline __attribute__((always_inline)) D segment(const double (&s)[4], M m1, M m2, M m3) {
+  return pick(m3, splat<D>(s[3]), pick(m2, splat<D>(s[2]), pick(m1, splat<D>(s[1]), splat<D>(s[0]))));
 }
 
-// channel() for two lanes, as bytes 0 and 4 of out. For 0 <= x < 2^51,
+// channel() for every lane, lane l into byte 4 l of out. For 0 <= x < 2^51,
 // x + 2^52 rounds x to an integer in the low bits of its significand, and
 // one less where that rounded up gives int(x); all exact.
-inline __attribute__((always_inline)) void channels2(Doubles c, uint8_t* out) {
-  const Doubles x = 255.0 * c, big = splat(4503599627370496.0);  // 2^52
-  Doubles whole = (x + big) - big;
-  whole -= (Doubles)((Masks)(whole > x) & (Masks)splat(1.0));
-  const Doubles rounded = whole + (Doubles)((Masks)(x - whole >= splat(0.5)) & (Masks)splat(1.0));
-  const Masks bits = (Masks)(rounded + big) & (Masks)(x >= splat(0.0));  // 0 where x < 0 or NaN
-  out[0] = uint8_t(bits[0]);
-  out[4] = uint8_t(bits[1]);
+template <int W>
+inline __attribute__((always_inline)) void channels(typename Lanes<W>::D c, uint8_t* out) {
+  typedef typename Lanes<W>::D D;
+  typedef typename Lanes<W>::M M;
+  const D x = 255.0 * c, big = splat<D>(4503599627370496.0);  // 2^52
+  D whole = (x + big) - big;
+  whole -= (D)((M)(whole > x) & (M)splat<D>(1.0));
+  const D rounded = whole + (D)((M)(x - whole >= splat<D>(0.5)) & (M)splat<D>(1.0));
+  const M bits = (M)(rounded + big) & (M)(x >= splat<D>(0.0));  // 0 where x < 0 or NaN
+  for (int l = 0; l < W; ++l) out[4 * l] = uint8_t(bits[l]);
 }
 
-void colour_two(const float* values, const uint8_t* flags, bool absolute, double lo, double hi, double span,
-                const Segments& map, uint8_t* out) {
-  Doubles t = (Doubles{values[0], values[1]} - lo) / span;
-  if (!absolute && !(hi > lo)) t = splat(0.5);
-  // lerp_map: clamp to [0, 1] as std::clamp does, times 4, segment and fraction.
-  const Doubles zero = splat(0.0), one = splat(1.0);
-  t = pick(t < zero, zero, pick(one < t, one, t)) * 4.0;
-  const Masks m1 = t >= 1.0, m2 = t >= 2.0, m3 = t >= 3.0;
-  const Doubles f = t - pick(m3, splat(3.0), pick(m2, splat(2.0), pick(m1, one, zero)));
-  const Masks grey = {-int64_t(!usable(flags[0])), -int64_t(!usable(flags[1]))};
-  for (int k = 0; k < 3; ++k) {
-    const Doubles c = segment(map.base[k], m1, m2, m3) + f * segment(map.step[k], m1, m2, m3);
-    channels2(pick(grey, splat(0.5), c), out + k);
+template <int W>
+inline __attribute__((always_inline)) void colour_lanes(const float* values, const uint8_t* flags, bool absolute,
+                                                        double lo, double hi, double span, const Segments& map,
+                                                        uint8_t* out) {
+  typedef typename Lanes<W>::D D;
+  typedef typename Lanes<W>::M M;
+  D t, zero = splat<D>(0.0), one = splat<D>(1.0);
+  M grey;
+  for (int l = 0; l < W; ++l) {
+    t[l] = values[l];
+    grey[l] = -int64_t(!usable(flags[l]));
   }
-  out[3] = out[7] = 255;
+  t = (t - lo) / span;
+  if (!absolute && !(hi > lo)) t = splat<D>(0.5);
+  // lerp_map: clamp to [0, 1] as std::clamp does, times 4, segment and fraction.
+  t = pick(t < zero, zero, pick(one < t, one, t)) * 4.0;
+  const M m1 = t >= 1.0, m2 = t >= 2.0, m3 = t >= 3.0;
+  const D f = t - pick(m3, splat<D>(3.0), pick(m2, splat<D>(2.0), pick(m1, one, zero)));
+  for (int k = 0; k < 3; ++k) {
+    const D c = segment<D>(map.base[k], m1, m2, m3) + f * segment<D>(map.step[k], m1, m2, m3);
+    channels<W>(pick(grey, splat<D>(0.5), c), out + k);
+  }
+  for (int l = 0; l < W; ++l) out[4 * l + 3] = 255;
 }
+
+// Vertices first .. last - 1 (a multiple of W of them).
+template <int W>
+inline __attribute__((always_inline)) void fill_body(const float* values, const uint8_t* flags, size_t first,
+                                                     size_t last, bool absolute, double lo, double hi, double span,
+                                                     const Segments& map, uint8_t* colors) {
+  for (size_t v = first; v < last; v += W)
+    colour_lanes<W>(values + v, flags + v, absolute, lo, hi, span, map, colors + 4 * v);
+}
+
+void fill_plain(const float* values, const uint8_t* flags, size_t first, size_t last, bool absolute, double lo,
+                double hi, double span, const Segments& map, uint8_t* colors) {
+  fill_body<2>(values, flags, first, last, absolute, lo, hi, span, map, colors);
+}
+
+#ifdef ISOFORM_AVX_CLONE
+ISOFORM_AVX_TARGET void fill_avx(const float* values, const uint8_t* flags, size_t first, size_t last,
+                                 bool absolute, double lo, double hi, double span, const Segments& map,
+                                 uint8_t* colors) {
+  fill_body<4>(values, flags, first, last, absolute, lo, hi, span, map, colors);
+}
+#endif
 
 void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, double hi, std::vector<uint8_t>& colors) {
   const std::vector<float>& values = curvature_values(c, q);
@@ -170,9 +210,16 @@ void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, doub
   const bool absolute = q == CurvatureQuantity::Absolute;
   static const Segments diverging_map(diverging_stops()), sequential_map(sequential_stops());
   const Segments& map = absolute ? sequential_map : diverging_map;
+  const size_t n = values.size();
   size_t v = 0;
-  for (; v + 2 <= values.size(); v += 2) colour_two(&values[v], &c.flags[v], absolute, lo, hi, span, map, &colors[4 * v]);
-  for (; v < values.size(); ++v) curvature_colour(q, lo, hi, values[v], c.flags[v], &colors[4 * v]);
+#ifdef ISOFORM_AVX_CLONE
+  if (vector_level() > 0) {
+    fill_avx(values.data(), c.flags.data(), 0, n / 4 * 4, absolute, lo, hi, span, map, colors.data());
+    v = n / 4 * 4;
+  }
+#endif
+  fill_plain(values.data(), c.flags.data(), v, v + (n - v) / 2 * 2, absolute, lo, hi, span, map, colors.data());
+  for (v += (n - v) / 2 * 2; v < n; ++v) curvature_colour(q, lo, hi, values[v], c.flags[v], &colors[4 * v]);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ void expect_rule(const VertexCurvature& c, CurvatureQuantity q) {
 }  // namespace
 
 TEST(CurvatureColours, EveryVertexGetsTheOneVertexRule) {
-  for (size_t n : {1u, 3u, 4u, 5u, 203u, 4096u}) {
+  for (size_t n : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 203u, 4096u}) {
     const VertexCurvature c = curvature_of(n, unsigned(n));
     expect_rule(c, CurvatureQuantity::Mean);
     expect_rule(c, CurvatureQuantity::Absolute);
