@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "fresh_memory.h"
+#include "../fresh_memory.h"
 
 namespace isoform {
 

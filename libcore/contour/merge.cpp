@@ -14,7 +14,7 @@
 
 #include "../errors.h"
 #include "brick_topology.h"
-#include "fresh_memory.h"
+#include "../fresh_memory.h"
 #include "packed_keys.h"
 #include "radix_sort.h"
 #include "seams.h"

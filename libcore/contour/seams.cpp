@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "fresh_memory.h"
+#include "../fresh_memory.h"
 #include "radix_sort.h"
 
 namespace isoform {

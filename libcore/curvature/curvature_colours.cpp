@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../errors.h"
+#include "../fresh_memory.h"
 #include "vector_level.h"
 
 namespace isoform {
@@ -89,7 +90,8 @@ namespace {
 
 void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, double* hi) {
   const std::vector<float>& values = curvature_values(c, q);
-  std::vector<float> kept(values.size());
+  std::vector<float> kept;
+  fresh_resize(kept, values.size(), false, true);
   size_t count = 0;
   for (size_t v = 0; v < values.size(); ++v)
     if (usable(c.flags[v])) kept[count++] = values[v];
@@ -206,7 +208,11 @@ ISOFORM_AVX_TARGET void fill_avx(const float* values, const uint8_t* flags, size
 void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, double hi, std::vector<uint8_t>& colors) {
   const std::vector<float>& values = curvature_values(c, q);
   const double span = hi > lo ? hi - lo : 1.0;
-  colors.resize(4 * values.size());
+  if (colors.size() != 4 * values.size()) {  // new pages made present first (fresh_memory.h)
+    colors.clear();
+    colors.shrink_to_fit();
+    fresh_resize(colors, 4 * values.size(), false, true);
+  }
   const bool absolute = q == CurvatureQuantity::Absolute;
   static const Segments diverging_map(diverging_stops()), sequential_map(sequential_stops());
   const Segments& map = absolute ? sequential_map : diverging_map;

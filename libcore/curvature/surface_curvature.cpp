@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "../errors.h"
+#include "../fresh_memory.h"
 #include "seed_vertex.h"
 #include "vertex_fit.h"
 
@@ -92,11 +93,19 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
   const VertexRings rings(mesh);
   c.stats = CurvatureStats{};
   c.stats.method = options.method;
-  // resize() keeps arrays that already have the size (no new pages).
-  for (auto* a : {&c.k1, &c.k2, &c.mean, &c.gauss, &c.absolute}) a->resize(n);
-  c.d1.resize(3 * n);
-  c.d2.resize(3 * n);
-  c.flags.resize(n);
+  // Arrays that already have the size are kept (no new pages); new ones get
+  // their pages present, in 2 MB pages where the system allows, before the
+  // fits write them (fresh_memory.h).
+  auto sized = [](auto& a, size_t count) {
+    if (a.size() == count) return;
+    a.clear();
+    a.shrink_to_fit();
+    fresh_resize(a, count, false, true);
+  };
+  for (auto* a : {&c.k1, &c.k2, &c.mean, &c.gauss, &c.absolute}) sized(*a, n);
+  sized(c.d1, 3 * n);
+  sized(c.d2, 3 * n);
+  sized(c.flags, n);
   std::vector<float> unused;
   std::vector<float>& fitted_normals = options.update_normals && fitted ? *fitted : unused;
   fitted_normals.assign(options.update_normals && fitted ? 3 * n : 0, 0.0f);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "../fresh_memory.h"
 
 namespace isoform {
 
@@ -25,14 +26,16 @@ template <class Offset>
 std::unique_ptr<int32_t[]> corner_pairs(const Mesh& mesh, std::unique_ptr<Offset[]>& at) {
   const size_t n = mesh.vertex_count(), m = mesh.triangle_count();
   const int32_t* tris = mesh.triangles.data();
-  at.reset(new Offset[n + 1]());
+  at = fresh_array<Offset>(n + 1, false, true);
+  std::fill(at.get(), at.get() + n + 1, Offset(0));
   for (size_t t = 0; t < m; ++t) {
     const int32_t* tri = tris + 3 * t;
     if (degenerate(tri)) continue;
     for (int i = 0; i < 3; ++i) ++at[size_t(tri[i]) + 1];
   }
   for (size_t v = 0; v < n; ++v) at[v + 1] += at[v];
-  std::unique_ptr<int32_t[]> pairs(new int32_t[2 * size_t(at[n])]);
+  // Fresh pages, in 2 MB pages where the system allows (fresh_memory.h).
+  std::unique_ptr<int32_t[]> pairs = fresh_array<int32_t>(2 * size_t(at[n]), false, true);
   for (size_t t = 0; t < m; ++t) {
     const int32_t* tri = tris + 3 * t;
     if (degenerate(tri)) continue;
@@ -83,12 +86,12 @@ void VertexRings::build(const Mesh& mesh) {
 
 template <class Mark, class Offset>
 void VertexRings::rings_from_pairs(const Offset* at, size_t n) {
-  start_.resize(n + 1);
-  start_[0] = 0;
-  boundary_.assign(n, 0);
-  nonmanifold_.assign(n, 0);
+  fresh_resize(start_, n + 1, false, true);
+  fresh_resize(boundary_, n, false, true);
+  fresh_resize(nonmanifold_, n, false, true);
   int32_t* const out = ring_.get();
-  std::unique_ptr<Mark[]> mark(new Mark[n]());
+  std::unique_ptr<Mark[]> mark = fresh_array<Mark>(n, false, true);
+  std::fill(mark.get(), mark.get() + n, Mark(0));
   size_t size = 0;
   for (size_t v = 0; v < n; ++v) {
     const Mark tag = Mark(v + 1) << 2;
@@ -131,7 +134,9 @@ void gather_rings(const VertexRings& rings, int32_t v, int count, RingScratch& s
     return;
   }
   if (s.mark.size() != rings.vertex_count()) {
-    s.mark.assign(rings.vertex_count(), 0);
+    s.mark.clear();
+    s.mark.shrink_to_fit();
+    fresh_resize(s.mark, rings.vertex_count(), false, true);
     s.stamp = 0;
   }
   if (++s.stamp == 0) {  // wrapped: clear the stamps once in 2^32 gathers

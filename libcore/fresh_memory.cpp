@@ -12,15 +12,23 @@
 
 namespace isoform {
 
-void populate_pages(void* p, size_t bytes, bool parallel) {
+void populate_pages(void* p, size_t bytes, bool parallel, bool huge) {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)
   constexpr size_t kSmall = size_t(1) << 20;    // below this, faults are cheap enough
   constexpr size_t kStretch = size_t(8) << 20;  // one call per stretch
+  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
   if (!p || bytes < kSmall) return;
   static const size_t page = size_t(sysconf(_SC_PAGESIZE));
   const uintptr_t begin = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~uintptr_t(page - 1);
   const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) & ~uintptr_t(page - 1);
   if (end <= begin) return;
+#if defined(MADV_HUGEPAGE)
+  // Only the whole 2 MB pages inside the range: the pieces at its ends may
+  // share their 2 MB with other allocations. A refusal changes nothing.
+  const uintptr_t huge_begin = (begin + kHuge - 1) & ~(kHuge - 1), huge_end = end & ~(kHuge - 1);
+  if (huge && huge_end > huge_begin)
+    (void)madvise(reinterpret_cast<void*>(huge_begin), huge_end - huge_begin, MADV_HUGEPAGE);
+#endif
   const size_t stretches = (end - begin + kStretch - 1) / kStretch;
   const auto one = [&](size_t s) {
     const uintptr_t a = begin + s * kStretch;
@@ -37,6 +45,7 @@ void populate_pages(void* p, size_t bytes, bool parallel) {
   (void)p;
   (void)bytes;
   (void)parallel;
+  (void)huge;
 #endif
 }
 
