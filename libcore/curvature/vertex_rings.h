@@ -16,7 +16,10 @@ namespace isoform {
 class VertexRings {
  public:
   // O(n) in the mesh size. Repeated vertices within a triangle are ignored.
-  explicit VertexRings(const Mesh& mesh);
+  // Where the processor has AVX-512 conflict detection, a vertex with up to
+  // eight triangles is done by it, unless vector_instructions is false
+  // (tests compare the two ways); the table is the same either way.
+  explicit VertexRings(const Mesh& mesh, bool vector_instructions = true);
 
   size_t vertex_count() const { return start_.size() - 1; }
   // The one-ring of v without v itself, in the order its triangles meet it.
@@ -32,10 +35,10 @@ class VertexRings {
 
  private:
   template <class Offset>
-  void build(const Mesh& mesh);
+  void build(const Mesh& mesh, bool vector_instructions);
   // The rings from each vertex's corner pairs (vertex_rings.cpp).
   template <class Mark, class Offset>
-  void rings_from_pairs(const Offset* at, size_t n);
+  void rings_from_pairs(const Offset* at, size_t n, bool vector_instructions);
 
   std::vector<int64_t> start_;
   std::unique_ptr<int32_t[]> ring_;  // the rings, one after another (in the corner pairs' array)

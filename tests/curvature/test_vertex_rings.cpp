@@ -90,6 +90,48 @@ TEST(VertexRings, TwoFansAtOneVertexAndRepeatedCornersAndIsolatedVertices) {
   EXPECT_EQ(r.valence(6), 0u);
 }
 
+TEST(VertexRings, ConflictDetectionAndMarksGiveTheSameTable) {
+  // Where the processor has AVX-512 conflict detection, fans of up to eight
+  // triangles are found by it, larger ones by marks; without it, or with
+  // vector_instructions false, all by marks. Both must give the same table:
+  // compared on a jittered torus with every seventh triangle gone (open
+  // fans), and on triangle soups over few vertices (fans of every size,
+  // repeated corners, edges with three and more triangles).
+  std::vector<truth::Exact> exact;
+  Mesh torus = truth::shape_mesh(truth::Shape::Torus, 60, 0.25, 5, exact);
+  std::vector<int32_t> kept;
+  for (size_t t = 0; t < torus.triangle_count(); ++t)
+    if (t % 7 != 3) kept.insert(kept.end(), &torus.triangles[3 * t], &torus.triangles[3 * t + 3]);
+  torus.triangles = kept;
+  std::vector<Mesh> meshes = {torus};
+  uint64_t state = 1;
+  auto draw = [&](int below) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return int32_t((state >> 33) % uint64_t(below));
+  };
+  for (int vertices : {4, 9, 25, 200}) {
+    Mesh soup;
+    soup.points.assign(3 * size_t(vertices), 0.0f);
+    for (int t = 0; t < 3 * vertices; ++t) soup.triangles.insert(soup.triangles.end(), {draw(vertices), draw(vertices), draw(vertices)});
+    meshes.push_back(soup);
+  }
+  size_t boundary = 0, nonmanifold = 0;
+  for (const Mesh& m : meshes) {
+    const VertexRings fast(m), marks(m, false);
+    ASSERT_EQ(fast.vertex_count(), marks.vertex_count());
+    EXPECT_EQ(fast.max_valence(), marks.max_valence());
+    for (int32_t v = 0; v < int32_t(m.vertex_count()); ++v) {
+      ASSERT_EQ(ring_of(fast, v), ring_of(marks, v)) << "vertex " << v;
+      EXPECT_EQ(fast.on_boundary(v), marks.on_boundary(v)) << "vertex " << v;
+      EXPECT_EQ(fast.nonmanifold(v), marks.nonmanifold(v)) << "vertex " << v;
+      boundary += marks.on_boundary(v);
+      nonmanifold += marks.nonmanifold(v);
+    }
+  }
+  EXPECT_GT(boundary, 100u);
+  EXPECT_GT(nonmanifold, 100u);
+}
+
 namespace {
 
 // The same result, bit for bit.
