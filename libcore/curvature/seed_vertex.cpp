@@ -145,8 +145,8 @@ ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const
   out.fvv = splat4(2.0) * c[2] / s2;
 }
 
-ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
-                                             VertexFitScratch& s, VertexFitResult (&out)[4]) {
+ISOFORM_LANES_INLINE bool seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                                             VertexFitScratch& s, VertexFitResult (&out)[4], SeedLanes* lanes) {
   // Lanes that the short path cannot settle at once (no usable normal,
   // fewer than three points, a large valence, a neighbour on the vertex)
   // go through fit_seed_vertex alone.
@@ -162,7 +162,6 @@ ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings
     ring[l] = rings.ring_begin(vertex[l]);
     valence[l] = 0;
     q[l] = kUp;
-    out[l] = VertexFitResult{};
     if (l >= count || !normals) continue;
     const size_t m = rings.valence(vertex[l]);
     if (m < size_t(fit_terms(FitModel::SeedQuadratic)) || m > kMaxValence) continue;
@@ -191,39 +190,57 @@ ISOFORM_LANES_INLINE void seed_vertices_body(const Mesh& mesh, const VertexRings
   bool ok[4];
   seed_fit_lanes(u, v, d, most, fit, ok);
   const PrincipalLanes p = principal_curvatures_lanes(fit, b1, b2, n);
+  if (lanes && count == 4) {
+    bool settled = true;
+    for (int l = 0; l < 4; ++l) settled &= !alone[l] && !coincide[l] && ok[l];
+    if (settled) {
+      auto put = [](double* to, Lanes4 x) { __builtin_memcpy(to, &x, sizeof(x)); };
+      put(lanes->k1, p.k1);
+      put(lanes->k2, p.k2);
+      put(lanes->d1[0], p.d1.x);
+      put(lanes->d1[1], p.d1.y);
+      put(lanes->d1[2], p.d1.z);
+      put(lanes->d2[0], p.d2.x);
+      put(lanes->d2[1], p.d2.y);
+      put(lanes->d2[2], p.d2.z);
+      for (int l = 0; l < 4; ++l) lanes->flags[l] = rings.nonmanifold(vertex[l]) ? kCurvatureNonmanifold : 0;
+      return true;
+    }
+  }
   for (int l = 0; l < count; ++l) {
     if (alone[l] || coincide[l] || !ok[l]) {
       out[l] = fit_seed_vertex(mesh, rings, vertex[l], s);
       continue;
     }
-    if (rings.nonmanifold(vertex[l])) out[l].flags |= kCurvatureNonmanifold;
+    out[l].flags = rings.nonmanifold(vertex[l]) ? kCurvatureNonmanifold : 0;
     out[l].curvature = principal_of_lane(p, l);
   }
+  return false;
 }
 
 // The four-lane path built for AVX too, chosen at run time (vector_level.h):
 // the same operations, so the same bits; the baseline build splits each
 // vector operation into two or four.
-void seed_vertices_plain(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
-                         VertexFitResult (&out)[4]) {
-  seed_vertices_body(mesh, rings, first, count, s, out);
+bool seed_vertices_plain(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
+                         VertexFitResult (&out)[4], SeedLanes* lanes) {
+  return seed_vertices_body(mesh, rings, first, count, s, out, lanes);
 }
 
 #ifdef ISOFORM_AVX_CLONE
-ISOFORM_AVX_TARGET void seed_vertices_avx(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
-                                          VertexFitScratch& s, VertexFitResult (&out)[4]) {
-  seed_vertices_body(mesh, rings, first, count, s, out);
+ISOFORM_AVX_TARGET bool seed_vertices_avx(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                                          VertexFitScratch& s, VertexFitResult (&out)[4], SeedLanes* lanes) {
+  return seed_vertices_body(mesh, rings, first, count, s, out, lanes);
 }
 #endif
 
 }  // namespace
 
-void fit_seed_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
-                       VertexFitResult (&out)[4]) {
+bool fit_seed_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
+                       VertexFitResult (&out)[4], SeedLanes* lanes) {
 #ifdef ISOFORM_AVX_CLONE
-  if (vector_level() > 0) return seed_vertices_avx(mesh, rings, first, count, s, out);
+  if (vector_level() > 0) return seed_vertices_avx(mesh, rings, first, count, s, out, lanes);
 #endif
-  seed_vertices_plain(mesh, rings, first, count, s, out);
+  return seed_vertices_plain(mesh, rings, first, count, s, out, lanes);
 }
 
 }  // namespace isoform

@@ -34,10 +34,10 @@ void store(VertexCurvature& c, size_t v, const VertexFitResult& r) {
   c.flags[v] = r.flags;
 }
 
-// store() for a group of four results, vertices first .. first + 3: the
-// same conversions (each lane's operations are store's), four values to an
-// instruction.
-void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4]) {
+// store() for four results side by side (vertices first .. first + 3):
+// the same conversions (each lane's operations are store's), four values to
+// an instruction.
+void store_lanes(VertexCurvature& c, size_t first, const SeedLanes& r) {
   typedef double Doubles __attribute__((vector_size(32)));
   typedef float Floats __attribute__((vector_size(16)));
   typedef int64_t Bits __attribute__((vector_size(32)));
@@ -45,9 +45,9 @@ void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4])
     const Floats f = __builtin_convertvector(x, Floats);
     std::memcpy(out, &f, sizeof(f));
   };
-  const PrincipalCurvatures &p0 = r[0].curvature, &p1 = r[1].curvature, &p2 = r[2].curvature,
-                            &p3 = r[3].curvature;
-  const Doubles k1 = {p0.k1, p1.k1, p2.k1, p3.k1}, k2 = {p0.k2, p1.k2, p2.k2, p3.k2};
+  Doubles k1, k2;
+  std::memcpy(&k1, r.k1, sizeof(k1));
+  std::memcpy(&k2, r.k2, sizeof(k2));
   const Bits magnitude = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};  // std::abs: the sign bit cleared
   put(&c.k1[first], k1);
   put(&c.k2[first], k2);
@@ -55,15 +55,30 @@ void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4])
   put(&c.gauss[first], k1 * k2);
   put(&c.absolute[first], (Doubles)((Bits)k1 & magnitude) + (Doubles)((Bits)k2 & magnitude));
   // x y z of the four directions one after another: twelve values.
-  auto put_directions = [&](float* out, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& e,
-                            const Eigen::Vector3d& f) {
-    put(out, Doubles{a(0), a(1), a(2), b(0)});
-    put(out + 4, Doubles{b(1), b(2), e(0), e(1)});
-    put(out + 8, Doubles{e(2), f(0), f(1), f(2)});
+  auto put_directions = [&](float* out, const double (&d)[3][4]) {
+    put(out, Doubles{d[0][0], d[1][0], d[2][0], d[0][1]});
+    put(out + 4, Doubles{d[1][1], d[2][1], d[0][2], d[1][2]});
+    put(out + 8, Doubles{d[2][2], d[0][3], d[1][3], d[2][3]});
   };
-  put_directions(&c.d1[3 * first], p0.d1, p1.d1, p2.d1, p3.d1);
-  put_directions(&c.d2[3 * first], p0.d2, p1.d2, p2.d2, p3.d2);
-  for (int i = 0; i < 4; ++i) c.flags[first + size_t(i)] = r[i].flags;
+  put_directions(&c.d1[3 * first], r.d1);
+  put_directions(&c.d2[3 * first], r.d2);
+  for (int i = 0; i < 4; ++i) c.flags[first + size_t(i)] = r.flags[i];
+}
+
+// A group of four results one by one, put side by side for store_lanes.
+void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4]) {
+  SeedLanes lanes;
+  for (int l = 0; l < 4; ++l) {
+    const PrincipalCurvatures& p = r[l].curvature;
+    lanes.k1[l] = p.k1;
+    lanes.k2[l] = p.k2;
+    for (int a = 0; a < 3; ++a) {
+      lanes.d1[a][l] = p.d1(a);
+      lanes.d2[a][l] = p.d2(a);
+    }
+    lanes.flags[l] = r[l].flags;
+  }
+  store_lanes(c, first, lanes);
 }
 
 void count_flags(VertexCurvature& c) {
@@ -133,12 +148,18 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
     // result is the one the one-vertex fit gives, so the grouping cannot
     // change a bit.
     VertexFitResult group[4];
+    SeedLanes lanes;
+    SeedLanes* const as_lanes = fitted_normals.empty() ? &lanes : nullptr;
     for (size_t first = range.begin(); first < range.end(); first += 4) {
       const int count = int(std::min<size_t>(4, range.end() - first));
-      if (seed)
-        fit_seed_vertices(mesh, rings, int32_t(first), count, s, group);
-      else
+      if (seed) {
+        if (fit_seed_vertices(mesh, rings, int32_t(first), count, s, group, as_lanes)) {
+          store_lanes(c, first, lanes);
+          continue;
+        }
+      } else {
         fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
+      }
       if (count == 4 && fitted_normals.empty())
         store_four(c, first, group);
       else
