@@ -139,14 +139,14 @@ inline __attribute__((always_inline)) void finish(const double (&c)[Model<Lo, Hi
   // Back from the scaled coordinates: a coefficient of u^i v^j carries
   // scale^-(i+j). Linear terms come first (u, v), then u^2, u v, v^2.
   const int q = Lo == 1 ? 2 : 0;
+  const double inv = 1.0 / scale, inv2 = inv * inv;  // the sums' 1 / scale, squared
   if (q) {
-    out.fu = c[0] / scale;
-    out.fv = c[1] / scale;
+    out.fu = c[0] * inv;
+    out.fv = c[1] * inv;
   }
-  const double s2 = scale * scale;
-  out.fuu = 2.0 * c[q] / s2;
-  out.fuv = c[q + 1] / s2;
-  out.fvv = 2.0 * c[q + 2] / s2;
+  out.fuu = 2.0 * c[q] * inv2;
+  out.fuv = c[q + 1] * inv2;
+  out.fvv = 2.0 * c[q + 2] * inv2;
   out.ok = true;
 }
 

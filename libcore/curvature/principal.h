@@ -39,6 +39,14 @@ void principal_curvatures4(const HeightFit (&f)[4], const Eigen::Vector3d (&b1)[
 // principal_curvatures' body, inline: a caller whose fit has no linear terms
 // (fu = fv = 0 known to the compiler) gets the steps that are exact for them
 // folded away, with the same bits.
+// t scaled to unit length by one reciprocal (t itself where it is zero).
+inline __attribute__((always_inline)) Eigen::Vector3d unit(const Eigen::Vector3d& t) {
+  const double z = (t(0) * t(0) + t(1) * t(1)) + t(2) * t(2);
+  if (!(z > 0.0)) return t;
+  const double inv = 1.0 / std::sqrt(z);
+  return {t(0) * inv, t(1) * inv, t(2) * inv};
+}
+
 inline __attribute__((always_inline)) PrincipalCurvatures principal_curvatures_inline(const HeightFit& f, const Eigen::Vector3d& b1,
                                                        const Eigen::Vector3d& b2, const Eigen::Vector3d& n) {
   PrincipalCurvatures pc;
@@ -46,17 +54,20 @@ inline __attribute__((always_inline)) PrincipalCurvatures principal_curvatures_i
   // First fundamental form E F G, and the second along the graph's normal,
   // negated for isoform's sign (positive where the surface bends away).
   const double E = 1.0 + f.fu * f.fu, F = f.fu * f.fv, G = 1.0 + f.fv * f.fv;
-  const double L = -f.fuu / l, M = -f.fuv / l, N = -f.fvv / l;
+  // Divisions are few: each divisor's reciprocal once, then products.
+  const double inv_l = 1.0 / l;
+  const double L = -f.fuu * inv_l, M = -f.fuv * inv_l, N = -f.fvv * inv_l;
   // The shape operator W = I^-1 II; its trace and determinant give H and K.
   const double det_i = E * G - F * F;
-  const double w11 = (G * L - F * M) / det_i, w12 = (G * M - F * N) / det_i;
-  const double w21 = (E * M - F * L) / det_i, w22 = (E * N - F * M) / det_i;
+  const double inv_det = 1.0 / det_i;
+  const double w11 = (G * L - F * M) * inv_det, w12 = (G * M - F * N) * inv_det;
+  const double w21 = (E * M - F * L) * inv_det, w22 = (E * N - F * M) * inv_det;
   const double h = 0.5 * (w11 + w22), k = w11 * w22 - w12 * w21;
   const double disc = std::sqrt(std::max(0.0, h * h - k));
   pc.k1 = h + disc;
   pc.k2 = h - disc;
   const Eigen::Vector3d xu = b1 + f.fu * n, xv = b2 + f.fv * n;
-  pc.normal = (n - f.fu * b1 - f.fv * b2) / l;
+  pc.normal = (n - f.fu * b1 - f.fv * b2) * inv_l;
   // The eigenvector of W for k1 from whichever row of (W - k1 I) is larger;
   // at an umbilic every direction is principal.
   // (Squared lengths: the comparisons are those of the lengths.)
@@ -70,8 +81,8 @@ inline __attribute__((always_inline)) PrincipalCurvatures principal_curvatures_i
     e = {w12, pc.k1 - w11};
   else
     e = {pc.k1 - w22, w21};
-  pc.d1 = (e(0) * xu + e(1) * xv).normalized();
-  pc.d2 = pc.normal.cross(pc.d1).normalized();
+  pc.d1 = unit(e(0) * xu + e(1) * xv);
+  pc.d2 = unit(pc.normal.cross(pc.d1));
   return pc;
 }
 

@@ -23,9 +23,9 @@ namespace lanes_detail {
 
 ISOFORM_LANES_INLINE Vec3Lanes normalized(const Vec3Lanes& t) {
   const Lanes4 z = (t.x * t.x + t.y * t.y) + t.z * t.z;
-  const Lanes4 r = sqrt4(z);
+  const Lanes4 inv = splat4(1.0) / sqrt4(z);
   const Mask4 positive = z > splat4(0.0);
-  return {select4(positive, t.x / r, t.x), select4(positive, t.y / r, t.y), select4(positive, t.z / r, t.z)};
+  return {select4(positive, t.x * inv, t.x), select4(positive, t.y * inv, t.y), select4(positive, t.z * inv, t.z)};
 }
 
 ISOFORM_LANES_INLINE Vec3Lanes cross(const Vec3Lanes& a, const Vec3Lanes& b) {
@@ -42,18 +42,20 @@ ISOFORM_LANES_INLINE PrincipalLanes principal_curvatures_lanes(const HeightFitLa
   const Lanes4 one = splat4(1.0), zero = splat4(0.0);
   const Lanes4 l = sqrt4((one + f.fu * f.fu) + f.fv * f.fv);
   const Lanes4 E = one + f.fu * f.fu, F = f.fu * f.fv, G = one + f.fv * f.fv;
-  const Lanes4 L = -f.fuu / l, M = -f.fuv / l, N = -f.fvv / l;
+  const Lanes4 inv_l = one / l;
+  const Lanes4 L = -f.fuu * inv_l, M = -f.fuv * inv_l, N = -f.fvv * inv_l;
   const Lanes4 det_i = E * G - F * F;
-  const Lanes4 w11 = (G * L - F * M) / det_i, w12 = (G * M - F * N) / det_i;
-  const Lanes4 w21 = (E * M - F * L) / det_i, w22 = (E * N - F * M) / det_i;
+  const Lanes4 inv_det = one / det_i;
+  const Lanes4 w11 = (G * L - F * M) * inv_det, w12 = (G * M - F * N) * inv_det;
+  const Lanes4 w21 = (E * M - F * L) * inv_det, w22 = (E * N - F * M) * inv_det;
   const Lanes4 h = splat4(0.5) * (w11 + w22), k = w11 * w22 - w12 * w21;
   const Lanes4 disc = sqrt4(max4(zero, h * h - k));
   pc.k1 = h + disc;
   pc.k2 = h - disc;
   const Vec3Lanes xu = {b1.x + f.fu * n.x, b1.y + f.fu * n.y, b1.z + f.fu * n.z};
   const Vec3Lanes xv = {b2.x + f.fv * n.x, b2.y + f.fv * n.y, b2.z + f.fv * n.z};
-  pc.normal = {((n.x - f.fu * b1.x) - f.fv * b2.x) / l, ((n.y - f.fu * b1.y) - f.fv * b2.y) / l,
-               ((n.z - f.fu * b1.z) - f.fv * b2.z) / l};
+  pc.normal = {((n.x - f.fu * b1.x) - f.fv * b2.x) * inv_l, ((n.y - f.fu * b1.y) - f.fv * b2.y) * inv_l,
+               ((n.z - f.fu * b1.z) - f.fv * b2.z) * inv_l};
   const Lanes4 a1 = w11 - pc.k1, a2 = w22 - pc.k1;
   const Lanes4 r1 = a1 * a1 + w12 * w12, r2 = w21 * w21 + a2 * a2;
   const Lanes4 tiny = splat4(1e-12) * ((abs4(pc.k1) + abs4(pc.k2)) + splat4(1e-300));

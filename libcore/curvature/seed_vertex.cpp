@@ -66,10 +66,10 @@ bool seed_fit(const double* u, const double* v, const double* d, int count, Heig
   ldlt.solve(rhs, c);
   for (double x : c)
     if (!std::isfinite(x)) return false;
-  const double s2 = scale * scale;
-  out.fuu = 2.0 * c[0] / s2;
-  out.fuv = c[1] / s2;
-  out.fvv = 2.0 * c[2] / s2;
+  const double inv2 = inv * inv;
+  out.fuu = 2.0 * c[0] * inv2;
+  out.fuv = c[1] * inv2;
+  out.fvv = 2.0 * c[2] * inv2;
   out.rcond = rcond;
   out.ok = true;
   return true;
@@ -138,11 +138,11 @@ ISOFORM_LANES_INLINE void seed_fit_lanes(const Lanes4* u, const Lanes4* v, const
   const Mask4 finite = finite4(c[0]) & finite4(c[1]) & finite4(c[2]);
   const Mask4 good = scaled & conditioned & finite;
   for (int l = 0; l < 4; ++l) ok[l] = factored[l] && good[l] != 0;
-  const Lanes4 s2 = scale * scale;
+  const Lanes4 inv2 = inv * inv;
   out.fu = out.fv = splat4(0.0);
-  out.fuu = splat4(2.0) * c[0] / s2;
-  out.fuv = c[1] / s2;
-  out.fvv = splat4(2.0) * c[2] / s2;
+  out.fuu = splat4(2.0) * c[0] * inv2;
+  out.fuv = c[1] * inv2;
+  out.fvv = splat4(2.0) * c[2] * inv2;
 }
 
 ISOFORM_LANES_INLINE bool seed_vertices_body(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
