@@ -4,9 +4,12 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "active_bricks.h"
 #include "leaf_bricks.h"
@@ -45,18 +48,44 @@ struct ValueScan {
       max = std::max(max, v);
     }
   }
+  // The scan of values that come after this one's.
+  void join(const ValueScan& later) {
+    min = std::min(min, later.min);
+    max = std::max(max, later.max);
+    if (!bad && later.bad) {
+      bad = true;
+      bad_value = later.bad_value;
+      bad_at = later.bad_at;
+    }
+  }
 };
 
 template <class TreeT>
 ValueScan scan_values(const TreeT& tree) {
   using LeafT = typename TreeT::LeafNodeType;
-  ValueScan scan;
-  for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
-    const auto* values = leaf->buffer().data();
-    const auto& mask = leaf->getValueMask();
-    for (openvdb::Index n = 0; n < LeafT::SIZE; ++n)
-      scan.add(double(values[n]), mask.isOn(n), [&] { return leaf->offsetToGlobalCoord(n); });
-  }
+  // NOTE: the leaves are scanned in parallel, in ranges joined in leaf
+  // order: the range is exact whatever the order (the leftmost of equal
+  // extremes is kept, as the serial scan keeps it), and the first bad
+  // value of the leftmost range that has one is the serial scan's first.
+  std::vector<const LeafT*> leaves;
+  leaves.reserve(tree.leafCount());
+  for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) leaves.push_back(&*leaf);
+  ValueScan scan = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, leaves.size(), 256), ValueScan{},
+      [&](const tbb::blocked_range<size_t>& range, ValueScan part) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+          const LeafT& leaf = *leaves[i];
+          const auto* values = leaf.buffer().data();
+          const auto& mask = leaf.getValueMask();
+          for (openvdb::Index n = 0; n < LeafT::SIZE; ++n)
+            part.add(double(values[n]), mask.isOn(n), [&] { return leaf.offsetToGlobalCoord(n); });
+        }
+        return part;
+      },
+      [](ValueScan left, const ValueScan& right) {
+        left.join(right);
+        return left;
+      });
   auto tile = tree.cbeginValueAll();
   tile.setMaxDepth(TreeT::ValueAllCIter::LEAF_DEPTH - 1);  // tiles only, no voxels
   for (; tile; ++tile) scan.add(double(*tile), tile.isValueOn(), [&] { return tile.getCoord(); });
@@ -148,9 +177,13 @@ GridFacts VdbFile::facts(int i) const {
 
 std::shared_ptr<const ScalarGrid> VdbFile::load(int i) const {
   openvdb::GridBase::Ptr stored;
+  std::optional<GridFacts> scanned;  // facts() of this very grid object, when it is the one read for them
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (i == read_index_) stored = std::move(read_grid_);
+    if (i == read_index_) {
+      stored = std::move(read_grid_);
+      scanned = facts_[size_t(i)];
+    }
     read_index_ = -1;
     read_grid_.reset();
   }
@@ -165,8 +198,15 @@ std::shared_ptr<const ScalarGrid> VdbFile::load(int i) const {
   if (grid->tree().activeVoxelCount() == 0)
     throw FormatError(what + " is empty (no active voxels)");
   // After the conversion, so that doubles beyond float range are caught too.
-  const ValueScan scan = scan_values(grid->tree());
-  require_finite(scan, grid->background(), grid == stored ? what : what + " (as float)");
+  // A float grid that facts() scanned (and found finite) is not scanned again.
+  ValueScan scan;
+  if (scanned && grid == stored) {
+    scan.min = scanned->value_min;
+    scan.max = scanned->value_max;
+  } else {
+    scan = scan_values(grid->tree());
+    require_finite(scan, grid->background(), grid == stored ? what : what + " (as float)");
+  }
   out->name = grid->getName();
   out->grid_class = to_grid_class(grid->getGridClass());
   out->background = grid->background();

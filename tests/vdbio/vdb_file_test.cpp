@@ -210,6 +210,67 @@ TEST(VdbFile, NanIsRefusedWithItsVoxel) {
             path + ": grid 'bad' has a NaN value at voxel (5, -6, 7); isoform needs finite values");
 }
 
+// Many leaves, so that the value scan runs over several ranges at once.
+openvdb::FloatGrid::Ptr many_leaves(const std::string& name) {
+  auto grid = float_grid(name, 0.0f);
+  uint32_t state = 99;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      for (int k = 0; k < 16; ++k) {
+        state = state * 1664525u + 1013904223u;
+        const float value = float(state >> 8) / float(1 << 24) * 200.0f - 100.0f;
+        grid->tree().setValue(openvdb::Coord(8 * i - 60, 8 * j + 3, 8 * k - 1), value);
+      }
+  return grid;
+}
+
+TEST(VdbFile, ScanOfManyLeavesGivesTheRangeAndTheFirstBadValue) {
+  TempDir dir;
+  // The range: the extremes of the active values, from facts() and from
+  // load() with and without facts() before it.
+  {
+    const std::string path = dir.file("range.vdb");
+    auto grid = many_leaves("f");
+    float lo = 1e30f, hi = -1e30f;
+    for (auto v = grid->cbeginValueOn(); v; ++v) {
+      lo = std::min(lo, *v);
+      hi = std::max(hi, *v);
+    }
+    write_grids(path, {grid});
+    const auto described = open_vdb(path);
+    EXPECT_EQ(described->facts(0).value_min, double(lo));
+    EXPECT_EQ(described->facts(0).value_max, double(hi));
+    const auto after_facts = described->load(0);
+    EXPECT_EQ(after_facts->value_min, double(lo));
+    EXPECT_EQ(after_facts->value_max, double(hi));
+    const auto alone = open_vdb(path)->load(0);
+    EXPECT_EQ(alone->value_min, double(lo));
+    EXPECT_EQ(alone->value_max, double(hi));
+  }
+  // Three bad values in leaves far apart: the one reported is the first in
+  // the tree's leaf order, whichever part of the scan meets it.
+  const std::string path = dir.file("bad.vdb");
+  auto grid = many_leaves("bad");
+  const openvdb::Coord bad[3] = {{8 * 13 - 60, 8 * 2 + 3, 8 * 9 - 1}, {8 * 5 - 60, 8 * 11 + 3, 8 * 1 - 1},
+                                 {8 * 9 - 60, 8 * 7 + 3, 8 * 14 - 1}};
+  for (const auto& c : bad) grid->tree().setValue(c, std::numeric_limits<float>::infinity());
+  openvdb::Coord first;
+  bool found = false;
+  for (auto leaf = grid->tree().cbeginLeaf(); leaf && !found; ++leaf)
+    for (openvdb::Index n = 0; n < openvdb::FloatTree::LeafNodeType::SIZE && !found; ++n)
+      if (!std::isfinite(leaf->getValue(n))) {
+        first = leaf->offsetToGlobalCoord(n);
+        found = true;
+      }
+  ASSERT_TRUE(found);
+  write_grids(path, {grid});
+  const std::string expected = path + ": grid 'bad' has an infinite value at voxel (" + std::to_string(first.x()) +
+                               ", " + std::to_string(first.y()) + ", " + std::to_string(first.z()) +
+                               "); isoform needs finite values";
+  EXPECT_EQ(error_of<FormatError>([&] { open_vdb(path)->facts(0); }), expected);
+  EXPECT_EQ(error_of<FormatError>([&] { open_vdb(path)->load(0); }), expected);
+}
+
 TEST(VdbFile, IntegerAndDoubleGridsLoadAsFloat) {
   TempDir dir;
   const std::string path = dir.file("types.vdb");
