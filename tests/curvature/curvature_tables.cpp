@@ -96,6 +96,10 @@ void contour_spheres(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+    std::cerr << "usage: curvature_tables [DOC.md]   (writes the document there, or to standard output)\n";
+    return 2;
+  }
   std::ostringstream out;
   out << "# Surface curvature: Table 4.1 and convergence\n\n"
       << "Written by `build/tests/curvature/curvature_tables docs/curvature-surface.md` (the numbers are\n"
@@ -132,5 +136,6 @@ int main(int argc, char** argv) {
   }
   std::ofstream file(argv[1]);
   file << out.str();
+  if (!file) std::cerr << argv[1] << ": cannot write\n";
   return file ? 0 : 1;
 }

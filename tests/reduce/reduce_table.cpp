@@ -42,7 +42,7 @@ std::string table(bool refine) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
+  if (argc != 2 || argv[1][0] == '-') {
     std::cerr << "usage: reduce_table DOC.md\n";
     return 2;
   }
