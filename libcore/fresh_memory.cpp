@@ -4,6 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include <cstdint>
+#include <mutex>
+#include <utility>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -49,8 +52,73 @@ void populate_pages(void* p, size_t bytes, bool parallel, bool huge) {
 #endif
 }
 
+namespace {
+
+// The kept mappings (SystemBlock). Made once and never destroyed, so that a
+// block freed while the process exits still finds it.
+class BlockCache {
+ public:
+  static BlockCache& get() {
+    static BlockCache* cache = new BlockCache;
+    return *cache;
+  }
+  // A kept mapping of exactly `bytes`, or null.
+  void* take(size_t bytes) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t i = 0; i < kept_.size(); ++i)
+      if (kept_[i].second == bytes) {
+        void* p = kept_[i].first;
+        kept_[i] = kept_.back();
+        kept_.pop_back();
+        held_ -= bytes;
+        return p;
+      }
+    return nullptr;
+  }
+  // True when the mapping is kept (then the caller must not unmap it).
+  bool keep(void* p, size_t bytes) {
+    if (bytes > SystemBlock::kCachedBlock) return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (held_ + bytes > SystemBlock::kCacheBytes) return false;
+    kept_.emplace_back(p, bytes);
+    held_ += bytes;
+    return true;
+  }
+  // Every kept mapping, handed over (the cache is empty after).
+  std::vector<std::pair<void*, size_t>> take_all() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    held_ = 0;
+    return std::move(kept_);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::pair<void*, size_t>> kept_;
+  size_t held_ = 0;
+};
+
+}  // namespace
+
+size_t release_kept_blocks() {
+  size_t bytes = 0;
+  for (const auto& [p, n] : BlockCache::get().take_all()) {
+#if defined(__linux__)
+    (void)munmap(p, n);
+#endif
+    bytes += n;
+  }
+  return bytes;
+}
+
 SystemBlock::SystemBlock(size_t bytes) : bytes_(bytes) {
 #if defined(__linux__)
+  if (bytes <= kCachedBlock) {
+    if (void* kept = BlockCache::get().take(bytes)) {
+      data_ = static_cast<char*>(kept);
+      mapped_ = true;
+      return;
+    }
+  }
   void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p != MAP_FAILED) {
     data_ = static_cast<char*>(p);
@@ -64,7 +132,7 @@ SystemBlock::SystemBlock(size_t bytes) : bytes_(bytes) {
 SystemBlock::~SystemBlock() {
 #if defined(__linux__)
   if (mapped_) {
-    (void)munmap(data_, bytes_);
+    if (!BlockCache::get().keep(data_, bytes_)) (void)munmap(data_, bytes_);
     return;
   }
 #endif

@@ -25,8 +25,19 @@ void populate_pages(void* p, size_t bytes, bool parallel = true, bool huge = fal
 // its mapping threshold in its heap, resident after they are freed).
 // Elsewhere, or when the mapping fails, an ordinary allocation. Not
 // initialised as far as the caller is concerned.
+//
+// Mappings of at most kCachedBlock bytes are kept, up to kCacheBytes in all
+// for the whole process, when they are destroyed, and a new block of the
+// same size takes one of them: its pages are then present already. A
+// contour of a small volume maps a few such blocks per call, and making
+// their pages present again costs more than the contour's own work on them
+// where a first touch is slow (2 to 3 us per 4 KB page on the machine
+// bench/README.md describes). Thread-safe.
 class SystemBlock {
  public:
+  static constexpr size_t kCachedBlock = size_t(4) << 20;
+  static constexpr size_t kCacheBytes = size_t(16) << 20;
+
   explicit SystemBlock(size_t bytes);
   ~SystemBlock();
   SystemBlock(const SystemBlock&) = delete;
@@ -38,6 +49,9 @@ class SystemBlock {
   size_t bytes_ = 0;
   bool mapped_ = false;
 };
+
+// Unmaps the mappings SystemBlock keeps; returns how many bytes they held.
+size_t release_kept_blocks();
 
 // n values, not initialised, their pages present.
 template <class T>

@@ -1,7 +1,8 @@
 // Storage for the per-brick tables of one contour: blocks filled in turn
 // and dropped whole, each mapped from the system and given back to it when
 // dropped (fresh_memory.h), so dropping a store lowers the resident set at
-// once, which many small per-brick vectors would not. The first block of a
+// once, which many small per-brick vectors would not; the process keeps a
+// few small blocks for the next contour (SystemBlock). The first block of a
 // store is small and each next one twice the last, up to 64 MB: a small
 // contour maps and touches little memory, a large one soon gets large
 // blocks.
