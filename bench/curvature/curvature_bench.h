@@ -62,6 +62,11 @@ Timing best_of(int reps, Body&& body) {
   return best;
 }
 
+// The smaller wall and the smaller CPU time of two timings.
+inline Timing better(const Timing& a, const Timing& b) {
+  return {std::min(a.wall, b.wall), std::min(a.cpu, b.cpu)};
+}
+
 // One method's figures on one case.
 struct Result {
   std::string method;
@@ -79,6 +84,7 @@ struct Options {
   int resolution_ellipsoid = 1632;// cube sphere of 6 x 408^2 quads: 998,788 vertices
   double jitter = 0.25;
   int reps = 3;        // timed calls per isoform method and thread count; the best counts
+  int rounds = 3;      // isoform's methods called in turn this many times; the best counts
   int peer_reps = 1;   // the same for VTK and CGAL (far slower)
   int cgal_rings = 3;  // CGAL's neighbourhood: the k-ring of isoform's default platelet
   int cgal_stride = 10;  // CGAL's one-thread time from every n-th vertex, scaled

@@ -65,12 +65,17 @@ void write_json(const std::string& path, const icb::Json& report) {
 }
 
 int run(const icb::Options& o, const std::string& command) {
-  icb::Json report{{"date", utc_now()}, {"command", command}, {"load_average_start", load_average()}};
+  icb::Json report{{"date", utc_now()},
+                   {"command", command},
+                   {"rounds", o.rounds},
+                   {"reps", o.reps},
+                   {"load_average_start", load_average()}};
   std::printf("isoform_curvature_bench %s, load average %s\n", utc_now().c_str(), load_average().c_str());
   std::printf("Million vertices per second per core, from CPU time (all threads) and from wall time x threads,\n"
-              "best of %d calls for isoform, %d for the peers; speed (CPU, 1 thread) and RMS as ratios against\n"
-              "isoform's default in the same run; * = one and two threads gave different bits\n",
-              o.reps, o.peer_reps);
+              "best of %d rounds x %d calls for isoform (its methods in turn in each round), %d for the peers;\n"
+              "speed (CPU, 1 thread) and RMS as ratios against isoform's default in the same run; * = one and\n"
+              "two threads gave different bits\n",
+              o.rounds, o.reps, o.peer_reps);
   icb::Json cases = icb::Json::array();
   for (const std::string& s : o.shapes)
     for (double jitter : {0.0, o.jitter}) {
@@ -110,6 +115,9 @@ int main(int argc, char** argv) {
   icb::Options o;
   app.add_option("--json", o.json_path, "Write the report as JSON to this file");
   app.add_option("--reps", o.reps, "Timed calls per isoform method and thread count (the best counts)")
+      ->check(CLI::Range(1, 20))
+      ->capture_default_str();
+  app.add_option("--rounds", o.rounds, "Rounds of isoform's methods called in turn (the best counts)")
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
   app.add_option("--peer-reps", o.peer_reps, "The same for VTK and CGAL")->check(CLI::Range(1, 20))->capture_default_str();
