@@ -14,24 +14,35 @@
 #endif
 
 namespace isoform {
+namespace {
+
+// Asks for 2 MB pages over the whole 2 MB pages inside [p, p + bytes) (the
+// pieces at its ends may share their 2 MB with other allocations). A
+// refusal changes nothing.
+void advise_huge(void* p, size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) & ~(kHuge - 1);
+  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+}  // namespace
 
 void populate_pages(void* p, size_t bytes, bool parallel, bool huge) {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)
   constexpr size_t kSmall = size_t(1) << 20;    // below this, faults are cheap enough
   constexpr size_t kStretch = size_t(8) << 20;  // one call per stretch
-  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
   if (!p || bytes < kSmall) return;
   static const size_t page = size_t(sysconf(_SC_PAGESIZE));
   const uintptr_t begin = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~uintptr_t(page - 1);
   const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) & ~uintptr_t(page - 1);
   if (end <= begin) return;
-#if defined(MADV_HUGEPAGE)
-  // Only the whole 2 MB pages inside the range: the pieces at its ends may
-  // share their 2 MB with other allocations. A refusal changes nothing.
-  const uintptr_t huge_begin = (begin + kHuge - 1) & ~(kHuge - 1), huge_end = end & ~(kHuge - 1);
-  if (huge && huge_end > huge_begin)
-    (void)madvise(reinterpret_cast<void*>(huge_begin), huge_end - huge_begin, MADV_HUGEPAGE);
-#endif
+  if (huge) advise_huge(reinterpret_cast<void*>(begin), end - begin);
   const size_t stretches = (end - begin + kStretch - 1) / kStretch;
   const auto one = [&](size_t s) {
     const uintptr_t a = begin + s * kStretch;
@@ -121,6 +132,7 @@ SystemBlock::SystemBlock(size_t bytes) : bytes_(bytes) {
   }
   void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p != MAP_FAILED) {
+    advise_huge(p, bytes);
     data_ = static_cast<char*>(p);
     mapped_ = true;
     return;

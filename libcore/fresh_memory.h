@@ -24,7 +24,8 @@ void populate_pages(void* p, size_t bytes, bool parallel = true, bool huge = fal
 // size (Linux: an anonymous mapping; the allocator would keep blocks below
 // its mapping threshold in its heap, resident after they are freed).
 // Elsewhere, or when the mapping fails, an ordinary allocation. Not
-// initialised as far as the caller is concerned.
+// initialised as far as the caller is concerned. The whole 2 MB pages inside
+// a mapping are asked for as 2 MB pages (MADV_HUGEPAGE).
 //
 // Mappings of at most kCachedBlock bytes are kept, up to kCacheBytes in all
 // for the whole process, when they are destroyed, and a new block of the

@@ -23,10 +23,12 @@ namespace isoform {
 namespace {
 
 // Arrays that are written in full before they are read: no zeroing, pages
-// made present up front (fresh_memory.h).
+// made present up front, in 2 MB pages where the system allows
+// (fresh_memory.h; a first touch of a 4 KB page costs 2-3 us on the bench
+// machine, bench/README.md).
 template <class T>
 std::unique_ptr<T[]> uninitialised(size_t n) {
-  return fresh_array<T>(n);
+  return fresh_array<T>(n, true, true);
 }
 
 template <class F>
@@ -270,14 +272,15 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   sum_contour_stats(bricks, mesh.contour);
   tbb::enumerable_thread_specific<Scratch> scratch;
   // Vertices and triangles first; the vertex data is then dropped before
-  // the neighbour and part tables are made, which lowers the peak.
-  fresh_resize(mesh.points, 3 * nv);
-  fresh_resize(mesh.normals, 3 * nv);
-  fresh_resize(mesh.triangles, 3 * nt);
+  // the neighbour and part tables are made, which lowers the peak. The
+  // mesh's arrays get 2 MB pages where the system allows (fresh_memory.h).
+  fresh_resize(mesh.points, 3 * nv, true, true);
+  fresh_resize(mesh.normals, 3 * nv, true, true);
+  fresh_resize(mesh.triangles, 3 * nt, true, true);
   for_each_brick(nb, [&](size_t b) { place_brick(bricks[b], b, o, vt, orientation, mesh, scratch.local()); });
   for (BrickStores& s : tables.stores) s.vertices.clear();
-  fresh_resize(mesh.neighbours, 3 * nt);
-  fresh_resize(mesh.parts, nt);
+  fresh_resize(mesh.neighbours, 3 * nt, true, true);
+  fresh_resize(mesh.parts, nt, true, true);
   std::vector<int32_t> part_counts(nb, 0);
   // Each brick writes its seam edges at its own offset: in brick order, and
   // in edge order inside a brick.
