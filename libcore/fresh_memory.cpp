@@ -98,8 +98,10 @@ class BlockCache {
   // Every kept mapping, handed over (the cache is empty after).
   std::vector<std::pair<void*, size_t>> take_all() {
     std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<void*, size_t>> all;
+    all.swap(kept_);
     held_ = 0;
-    return std::move(kept_);
+    return all;
   }
 
  private:
