@@ -112,6 +112,13 @@ class BlockCache {
 
 }  // namespace
 
+size_t scratch_bytes(size_t bytes) {
+  if (bytes > SystemBlock::kCachedBlock) return bytes;
+  size_t size = size_t(64) << 10;
+  while (size < bytes) size *= 2;
+  return size;
+}
+
 size_t release_kept_blocks() {
   size_t bytes = 0;
   for (const auto& [p, n] : BlockCache::get().take_all()) {

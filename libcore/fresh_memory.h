@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace isoform {
@@ -53,6 +54,32 @@ class SystemBlock {
 
 // Unmaps the mappings SystemBlock keeps; returns how many bytes they held.
 size_t release_kept_blocks();
+
+// The bytes a ScratchArray maps for `bytes`: rounded up to a power of two,
+// 64 KB at least, up to SystemBlock::kCachedBlock; larger sizes as they are.
+size_t scratch_bytes(size_t bytes);
+
+// n values of T, not initialised, for one call's scratch, in a SystemBlock
+// of scratch_bytes(n * sizeof(T)): the rounding lets the next call's array
+// of a like size take the block this one leaves (SystemBlock keeps it),
+// pages present. Larger arrays get their pages made present up front, in
+// 2 MB pages where the system allows. T must be trivially copyable.
+template <class T>
+class ScratchArray {
+  static_assert(std::is_trivially_copyable<T>::value, "ScratchArray holds trivially copyable values only");
+
+ public:
+  ScratchArray() = default;
+  explicit ScratchArray(size_t n) : block_(std::make_unique<SystemBlock>(scratch_bytes(n * sizeof(T)))) {
+    if (n * sizeof(T) > SystemBlock::kCachedBlock) populate_pages(block_->data(), n * sizeof(T), true, true);
+  }
+  T* get() const { return block_ ? reinterpret_cast<T*>(block_->data()) : nullptr; }
+  T& operator[](size_t i) const { return get()[i]; }
+  void reset() { block_.reset(); }
+
+ private:
+  std::unique_ptr<SystemBlock> block_;
+};
 
 // n values, not initialised, their pages present.
 template <class T>

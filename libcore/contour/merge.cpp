@@ -72,7 +72,7 @@ Offsets prefix_sums(const std::vector<BrickMesh>& bricks) {
 // several bricks (same key) all take the index of the first copy, which
 // belongs to the lowest brick; the kept vertices are numbered brick by brick.
 struct VertexTable {
-  std::unique_ptr<int32_t[]> final_index;
+  ScratchArray<int32_t> final_index;
   std::vector<int32_t> first;  // per brick: final index of its first kept vertex
 };
 
@@ -135,7 +135,7 @@ struct PackedKeys {
 VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o) {
   const size_t nb = bricks.size();
   VertexTable vt;
-  vt.final_index = uninitialised<int32_t>(o.vertex.back());
+  vt.final_index = ScratchArray<int32_t>(o.vertex.back());
   int32_t* fin = vt.final_index.get();
   for_each_brick(nb, [&](size_t b) {
     for (size_t v = o.vertex[b]; v < o.vertex[b + 1]; ++v) fin[v] = 0;
@@ -145,7 +145,7 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
   if (layout.fits) {
     // (edge key, provisional vertex) in one word, in the same order: half
     // the memory of the pairs, and a cheaper sort.
-    const std::unique_ptr<uint64_t[]> keys = uninitialised<uint64_t>(nk);
+    const ScratchArray<uint64_t> keys(nk);
     for_each_brick(nb, [&](size_t b) {
       size_t at = o.shared[b];
       const BrickMesh& bm = bricks[b];
@@ -158,7 +158,7 @@ VertexTable vertex_table(const std::vector<BrickMesh>& bricks, const Offsets& o)
       // vertices in the order it made them), so a stable sort by the bits
       // above the vertex leaves them in the order of the whole words; should
       // they not come out so, a comparison sort puts them there.
-      const std::unique_ptr<uint64_t[]> buffer = uninitialised<uint64_t>(nk);
+      const ScratchArray<uint64_t> buffer(nk);
       radix_sort(keys.get(), buffer.get(), nk, layout.bits, [](uint64_t k) { return k; }, layout.vertex_bits);
     }
     if (!sorted(keys.get(), nk)) tbb::parallel_sort(keys.get(), keys.get() + nk);
@@ -285,7 +285,7 @@ bool merge_bricks(BrickTables& tables, const MergeOrientation& orientation, Mesh
   // Each brick writes its seam edges at its own offset: in brick order, and
   // in edge order inside a brick.
   const size_t seam_count = o.seam.back();
-  std::unique_ptr<SeamEdge[]> seams = uninitialised<SeamEdge>(seam_count);
+  ScratchArray<SeamEdge> seams(seam_count);
   for_each_brick(nb, [&](size_t b) {
     brick_topology(bricks[b], b, o, vt, orientation, mesh, part_counts, seams.get(), scratch.local());
   });

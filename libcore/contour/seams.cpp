@@ -75,7 +75,7 @@ void match_seams(SeamEdge* seams, size_t n, size_t vertex_count, std::vector<int
     // Stable, so equal keys keep their increasing edges, which is the order
     // of (key, edge).
     const int vb = radix_bits_for(vertex_count > 0 ? uint64_t(vertex_count - 1) : 0);
-    const std::unique_ptr<SeamEdge[]> buffer = fresh_array<SeamEdge>(n);
+    const ScratchArray<SeamEdge> buffer(n);
     radix_sort(seams, buffer.get(), n, vb, [](const SeamEdge& e) { return e.key >> 32; });
   }
   // Pieces of the sorted edges that begin where a run of one smaller

@@ -71,3 +71,28 @@ TEST(SystemBlock, LargeBlocksAreNotKept) {
   blocks(1, large, 'z');
   EXPECT_EQ(release_kept_blocks(), 0u);
 }
+
+TEST(ScratchArray, SizesRoundUpToPowersOfTwoWhileKept) {
+  EXPECT_EQ(scratch_bytes(0), size_t(64) << 10);
+  EXPECT_EQ(scratch_bytes(1), size_t(64) << 10);
+  EXPECT_EQ(scratch_bytes((size_t(64) << 10) + 1), size_t(128) << 10);
+  EXPECT_EQ(scratch_bytes(size_t(3) << 20), size_t(4) << 20);
+  EXPECT_EQ(scratch_bytes(SystemBlock::kCachedBlock), SystemBlock::kCachedBlock);
+  EXPECT_EQ(scratch_bytes(SystemBlock::kCachedBlock + 8), SystemBlock::kCachedBlock + 8);
+}
+
+TEST(ScratchArray, NextArrayOfALikeSizeTakesTheBlock) {
+  release_kept_blocks();
+  int32_t* first;
+  {
+    ScratchArray<int32_t> a(100000);  // 400,000 bytes: a 512 KB block
+    for (size_t i = 0; i < 100000; ++i) a[i] = int32_t(i);
+    first = a.get();
+  }
+  const ScratchArray<int32_t> b(90000);  // 360,000 bytes: the same 512 KB
+  EXPECT_EQ(b.get(), first);
+  EXPECT_EQ(b[89999], 89999);
+  const ScratchArray<int32_t> empty;
+  EXPECT_EQ(empty.get(), nullptr);
+  release_kept_blocks();
+}
