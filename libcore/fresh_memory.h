@@ -22,8 +22,9 @@ namespace isoform {
 void populate_pages(void* p, size_t bytes, bool parallel = true, bool huge = false);
 
 // Bytes mapped from the system and given back to it when destroyed, at any
-// size (Linux: an anonymous mapping; the allocator would keep blocks below
-// its mapping threshold in its heap, resident after they are freed).
+// size (Linux: an anonymous mapping; the allocator would keep any block below
+// its mapping threshold in its heap, resident after it is freed, where this
+// class keeps a bounded few, below).
 // Elsewhere, or when the mapping fails, an ordinary allocation. Not
 // initialised as far as the caller is concerned. The whole 2 MB pages inside
 // a mapping are asked for as 2 MB pages (MADV_HUGEPAGE).
