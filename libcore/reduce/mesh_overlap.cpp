@@ -224,6 +224,11 @@ bool boxes_meet(const Box& a, const Box& b) {
   return true;
 }
 
+// The largest side of a box.
+double extent(const Box& b) {
+  return std::max({double(b.hi[0]) - double(b.lo[0]), double(b.hi[1]) - double(b.lo[1]),
+                   double(b.hi[2]) - double(b.lo[2])});
+}
 
 // A bucket's triangles with what every pair test reads: corners, normal,
 // box and vertex indices, gathered once per bucket instead of once per pair.
@@ -231,6 +236,7 @@ struct LocalTriangle {
   Point3 p[3];
   Point3 n;
   Box box;
+  double extent;  // of box
   int32_t v[3];
 };
 
@@ -258,6 +264,9 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
         const LocalTriangle& ta = b.local[size_t(e[p].first >> 3)];
         const LocalTriangle& tb = b.local[size_t(e[q].first >> 3)];
         if (!boxes_meet(ta.box, tb.box)) continue;
+        // Boxes that meet lie in a box whose sides are at most the sums of
+        // theirs (the float boxes hold the triangles).
+        if (certainly_apart(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v, ta.extent + tb.extent)) continue;
         const PairOverlap o = triangles_overlap(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v);
         if (o.overlap) b.found.push_back({e[p].triangle, e[q].triangle, o.near});  // a < b: sorted
       }
@@ -284,6 +293,7 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
         corners.of(id, t.p);
         t.n = triangle_normal(t.p);
         t.box = boxes[id];
+        t.extent = extent(t.box);
         for (int c = 0; c < 3; ++c) t.v[c] = mesh.triangles[3 * id + size_t(c)];
       }
       // Equal cells together, each in triangle order: in a dense map a

@@ -207,6 +207,26 @@ bool degenerate(const Point3& n) { return !(n[0] != 0 || n[1] != 0 || n[2] != 0)
 
 Point3 triangle_normal(const Point3 t[3]) { return normal(t); }
 
+bool certainly_apart(const Point3 pa[3], const Point3& na, const int32_t ia[3], const Point3 pb[3], const Point3& nb,
+                     const int32_t ib[3], double extent) {
+  const double bound = 2 * (kBound3 * extent * extent * extent);
+  // The corners of q not shared with the other triangle, strictly on one
+  // side of the plane through p0 with normal n (counted without branches:
+  // which way a pair goes is as good as random).
+  auto one_side_of = [&](const Point3& p0, const Point3& n, const Point3 q[3], const int32_t iq[3], const int32_t ip[3]) {
+    int above = 0, below = 0, off = 0;
+    for (int j = 0; j < 3; ++j) {
+      const int own = (iq[j] != ip[0]) & (iq[j] != ip[1]) & (iq[j] != ip[2]);
+      const double det = dot(n, sub(q[j], p0));
+      off += own;
+      above += own & int(det > bound);
+      below += own & int(det < -bound);
+    }
+    return (off > 0) & ((above == off) | (below == off));
+  };
+  return one_side_of(pa[0], na, pb, ib, ia) || one_side_of(pb[0], nb, pa, ia, ib);
+}
+
 PairOverlap triangles_overlap(const Point3 pa[3], const int32_t ia[3], const Point3 pb[3], const int32_t ib[3]) {
   return triangles_overlap(pa, normal(pa), ia, pb, normal(pb), ib);
 }

@@ -41,4 +41,16 @@ PairOverlap triangles_overlap(const Point3 a[3], const Point3& na, const int32_t
 // (t1 - t0) x (t2 - t0).
 Point3 triangle_normal(const Point3 t[3]);
 
+// True when a and b certainly do not overlap, by the plane tests that
+// triangles_overlap makes first (the corners of one that the other does not
+// share strictly on one side of the other's plane), with twice the rounding
+// bound of an extent at least the pair's: `extent` >= the largest side of
+// the box around both triangles. A side that clears twice the larger bound
+// is the side triangles_overlap finds (the factor covers the rounding of the
+// extent and of the products' last bits), so true here means no overlap
+// there. False decides nothing (call triangles_overlap). For broad phases
+// that know the triangles' boxes: most neighbouring pairs end here.
+bool certainly_apart(const Point3 a[3], const Point3& na, const int32_t ia[3], const Point3 b[3], const Point3& nb,
+                     const int32_t ib[3], double extent);
+
 }  // namespace isoform::reduce

@@ -4,7 +4,9 @@
 // overlap themselves, flat and tilted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <utility>
 
@@ -91,6 +93,86 @@ TEST(TriangleOverlap, TheSameTriangleTwiceOverlaps) {
 
 TEST(TriangleOverlap, DegenerateTrianglesAreLeftToTheirNeighbours) {
   EXPECT_FALSE(test(kBase, {{{0.5, 0.5, -1}, {0.5, 0.5, 0}, {0.5, 0.5, 1}}, {3, 4, 5}}).overlap);
+}
+
+// The largest side of the box around both triangles.
+double pair_extent(const Tri& a, const Tri& b) {
+  double d = 0;
+  for (int k = 0; k < 3; ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Tri* t : {&a, &b})
+      for (const Point3& p : t->p) {
+        lo = std::min(lo, p[size_t(k)]);
+        hi = std::max(hi, p[size_t(k)]);
+      }
+    d = std::max(d, hi - lo);
+  }
+  return d;
+}
+
+bool apart(const Tri& a, const Tri& b, double extent) {
+  return certainly_apart(a.p, triangle_normal(a.p), a.v, b.p, triangle_normal(b.p), b.v, extent);
+}
+
+TEST(TriangleOverlap, CertainlyApartDecidesTheClearCasesOnly) {
+  const double e = 2.0;
+  // A triangle above the base, sharing nothing, a vertex, an edge.
+  EXPECT_TRUE(apart(kBase, {{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, {3, 4, 5}}, pair_extent(kBase, kBase) + e));
+  EXPECT_TRUE(apart(kBase, {{{0, 0, 0}, {1, 0, 1}, {0, 1, 1}}, {0, 4, 5}}, 2 * e));
+  EXPECT_TRUE(apart(kBase, {{{2, 0, 0}, {0, 0, 0}, {1, 1, -1}}, {1, 0, 5}}, 2 * e));
+  // Folded onto the base along its edge, crossing it, the same triangle:
+  // left to triangles_overlap.
+  EXPECT_FALSE(apart(kBase, {{{2, 0, 0}, {0, 0, 0}, {1, 1, 0}}, {1, 0, 5}}, 2 * e));
+  EXPECT_FALSE(apart(kBase, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}}, {3, 4, 5}}, 2 * e));
+  EXPECT_FALSE(apart(kBase, kBase, 2 * e));
+}
+
+TEST(TriangleOverlap, CertainlyApartNeverHidesAnOverlap) {
+  // Random pairs sharing 0, 1 or 2 vertices, some far apart, some crossing,
+  // some with the second triangle within 1e-16 to 1e-10 of the first's
+  // plane: whenever certainly_apart says apart, triangles_overlap finds no
+  // overlap, with the exact extent and with a larger one.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), tiny(-1, 1);
+  long long decided = 0, overlaps = 0, total = 0;
+  for (int i = 0; i < 200000; ++i) {
+    Tri a, b;
+    for (int k = 0; k < 3; ++k) {
+      a.v[k] = k;
+      b.v[k] = 3 + k;
+      for (int c = 0; c < 3; ++c) {
+        a.p[k][size_t(c)] = u(rng);
+        b.p[k][size_t(c)] = u(rng);
+      }
+    }
+    const int shared = i % 3;
+    for (int k = 0; k < shared; ++k) {  // b's corner k is a's corner k, with b turning the other way
+      b.p[k] = a.p[k];
+      b.v[k] = a.v[k];
+    }
+    if (shared == 2) std::swap(b.p[0], b.p[1]), std::swap(b.v[0], b.v[1]);
+    if (i % 5 == 0) {  // b's free corners near a's plane
+      const Point3 n = triangle_normal(a.p);
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (int k = shared; k < 3; ++k) {
+        const Point3 q = b.p[k];
+        const double off = ((q[0] - a.p[0][0]) * n[0] + (q[1] - a.p[0][1]) * n[1] + (q[2] - a.p[0][2]) * n[2]) / len;
+        const double keep = std::pow(10.0, -16 + 6 * (0.5 + 0.5 * tiny(rng))) * tiny(rng);
+        for (int c = 0; c < 3; ++c) b.p[k][size_t(c)] = q[size_t(c)] - (off - keep) * n[size_t(c)] / len;
+      }
+    }
+    const bool overlap = triangles_overlap(a.p, a.v, b.p, b.v).overlap;
+    const double d = pair_extent(a, b);
+    for (double extent : {d, 1.7 * d}) {
+      const bool said = apart(a, b, extent);
+      EXPECT_FALSE(said && overlap) << "pair " << i << " (" << shared << " shared) called apart but overlaps";
+      decided += said;
+      ++total;
+    }
+    overlaps += overlap;
+  }
+  EXPECT_GT(overlaps, 1000);          // the sample has overlaps to hide
+  EXPECT_GT(decided, total / 4);      // and the test decides a good part of it
 }
 
 // Every pair, tested directly.
