@@ -6,6 +6,7 @@
 
 #include "../errors.h"
 #include "../fresh_memory.h"
+#include "float_ranks.h"
 #include "vector_level.h"
 
 namespace isoform {
@@ -39,21 +40,6 @@ const Rgb* sequential_stops() {
   return stops;
 }
 Rgb sequential(double t) { return lerp_map(sequential_stops(), 5, t); }
-
-// The p-th and q-th percentiles (p <= q) of v, which is reordered.
-void percentiles(std::vector<float>& v, double p, double q, double* at_p, double* at_q) {
-  if (v.empty()) {
-    *at_p = *at_q = 0.0;
-    return;
-  }
-  auto rank = [&](double f) { return std::min(v.size() - 1, size_t(f * double(v.size() - 1) + 0.5)); };
-  const size_t kp = rank(p), kq = rank(q);
-  std::nth_element(v.begin(), v.begin() + long(kq), v.end());
-  *at_q = v[kq];
-  // Everything before kq is at most v[kq]: the kp-th smallest is among it.
-  if (kp < kq) std::nth_element(v.begin(), v.begin() + long(kp), v.begin() + long(kq));
-  *at_p = v[kp];
-}
 
 bool usable(uint8_t flags) { return !(flags & (kCurvatureIsolated | kCurvatureFailed)); }
 
@@ -90,13 +76,15 @@ namespace {
 
 void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, double* hi) {
   const std::vector<float>& values = curvature_values(c, q);
-  std::vector<float> kept;
-  fresh_resize(kept, values.size(), false, true);
-  size_t count = 0;
-  for (size_t v = 0; v < values.size(); ++v)
-    if (usable(c.flags[v])) kept[count++] = values[v];
-  kept.resize(count);
-  percentiles(kept, 0.02, 0.98, lo, hi);
+  const uint8_t* flags = c.flags.data();
+  // The 2nd and 98th percentiles of the usable vertices' values.
+  const auto ranks = float_ranks(values.data(), values.size(), [flags](size_t v) { return usable(flags[v]); });
+  const size_t n = ranks.count();
+  auto rank = [n](double f) { return std::min(n - 1, size_t(f * double(n - 1) + 0.5)); };
+  float at_lo = 0, at_hi = 0;
+  if (n > 0) ranks.at(rank(0.02), rank(0.98), &at_lo, &at_hi);
+  *lo = at_lo;
+  *hi = at_hi;
   if (q != CurvatureQuantity::Absolute) {
     const double m = std::max(std::abs(*lo), std::abs(*hi));
     *lo = -m;
