@@ -8,10 +8,6 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace isoform {
 
 typedef double Lanes4 __attribute__((vector_size(32)));
@@ -31,13 +27,12 @@ ISOFORM_LANES_INLINE Lanes4 select4(Mask4 c, Lanes4 a, Lanes4 b) {
   return (Lanes4)((c & (Mask4)a) | (~c & (Mask4)b));
 }
 
+// NOTE: lane by lane, which the sources that use it (built with
+// -fno-math-errno, libcore/CMakeLists.txt: no errno to set for a negative
+// argument) turn into one 256-bit square root in their AVX and AVX-512
+// clones and two 128-bit ones in the baseline; each is the IEEE square root.
 ISOFORM_LANES_INLINE Lanes4 sqrt4(Lanes4 x) {
-#if defined(__SSE2__)
-  const __m128d lo = _mm_sqrt_pd(__m128d{x[0], x[1]}), hi = _mm_sqrt_pd(__m128d{x[2], x[3]});
-  return Lanes4{lo[0], lo[1], hi[0], hi[1]};
-#else
   return Lanes4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
-#endif
 }
 
 // std::abs: the sign bit cleared.
