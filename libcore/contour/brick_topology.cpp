@@ -28,7 +28,10 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
   // vertex scan. Fan links pair the edges inside a fan directly (below).
   if (first_.size() < vertex_count) first_.resize(vertex_count);
   std::fill(first_.begin(), first_.begin() + std::ptrdiff_t(vertex_count), -1);
-  groups_.clear();
+  // At most one group per triangle edge: the array is sized once and
+  // filled by count.
+  if (groups_.size() < 3 * nt) groups_.resize(3 * nt);
+  size_t group_count = 0;
   for (size_t t = 0; t < nt; ++t) {
     int linked = 0;
     if (links[t]) linked |= 1 << oriented(links[t] & 3);
@@ -49,8 +52,16 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
       int32_t g = first_[size_t(lo)];
       while (g >= 0 && groups_[size_t(g)].other != hi) g = groups_[size_t(g)].next;
       if (g < 0) {
-        groups_.push_back(Group{hi, int32_t(at), -1, first_[size_t(lo)]});
-        first_[size_t(lo)] = int32_t(groups_.size() - 1);
+        // NOTE: the fields are stored one by one: a Group built first and
+        // copied in is read back as one 16-byte load from four 4-byte
+        // stores, which the core cannot forward (a stall of its own).
+        const size_t n = group_count++;
+        Group& fresh = groups_[n];
+        fresh.other = hi;
+        fresh.first = int32_t(at);
+        fresh.second = -1;
+        fresh.next = first_[size_t(lo)];
+        first_[size_t(lo)] = int32_t(n);
       } else {
         Group& group = groups_[size_t(g)];
         group.second = group.second == -1 ? int32_t(at) : kMore;
@@ -70,7 +81,8 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     const int32_t t = e / 3;
     return tris[e] < tris[3 * t + next(e - 3 * t)];
   };
-  for (const Group& slot : groups_) {
+  for (size_t k = 0; k < group_count; ++k) {
+    const Group& slot = groups_[k];
     ++counts.edges;
     if (slot.second == -1) {
       ++counts.boundary;
