@@ -168,7 +168,7 @@ Outcome Remover::evaluate(Proposal& q) const {
   tracker_.prefetch_lists(platelet);
   for (int v : platelet.ring) {
     prefetch(&w_.pos[size_t(v)]);
-    prefetch(&w_.vfaces[size_t(v)]);
+    prefetch(w_.vfaces.record(size_t(v)));
   }
   bool plane = false;
   const Frame frame = platelet_frame(w_, platelet, &plane);
@@ -190,8 +190,7 @@ Outcome Remover::evaluate(Proposal& q) const {
     // Kept only when the moved point still passes every test.
     if (refined.allFinite() && half_plane_ok(platelet, frame, refined) && faces_ok(q, frame, refined)) q.point = refined;
   }
-  for (int v : platelet.ring)
-    if (!w_.vfaces[size_t(v)].empty()) prefetch(w_.vfaces[size_t(v)].data());
+  for (int v : platelet.ring) prefetch(w_.vfaces.record(size_t(v)));
   if (tracker_.active() && !tracker_.measure(w_, platelet, q.point, q.faces, q.pending)) return Outcome::Tolerance;
   new_weights(q);
   return Outcome::Removed;
@@ -235,10 +234,9 @@ void Remover::commit(const Proposal& q, int pass) {
   for (int f : p.faces)
     for (int v : w_.tri[size_t(f)]) {
       if (v == p.a[0] || v == p.a[1] || v == p.a[2]) continue;
-      auto& list = w_.vfaces[size_t(v)];
-      list.erase(std::find(list.begin(), list.end(), f));
+      w_.vfaces.erase(size_t(v), f);
     }
-  for (int v : p.a) w_.vfaces[size_t(v)].clear();
+  for (int v : p.a) w_.vfaces.clear(size_t(v));
   w_.vertex_alive[size_t(p.a[1])] = w_.vertex_alive[size_t(p.a[2])] = 0;
   ids_.assign(p.faces.begin(), p.faces.begin() + long(faces.tri.size()));
   for (size_t i = 0; i < p.faces.size(); ++i) {
@@ -250,7 +248,7 @@ void Remover::commit(const Proposal& q, int pass) {
     }
     w_.tri[id] = faces.tri[i];
     w_.face_pass[id] = pass;
-    for (int v : faces.tri[i]) w_.vfaces[size_t(v)].push_back(int(id));
+    for (int v : faces.tri[i]) w_.vfaces.push_back(size_t(v), int(id));
   }
   w_.live_faces -= (long long)(p.faces.size() - faces.tri.size());
   const size_t a = size_t(p.a[0]);

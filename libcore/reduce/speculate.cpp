@@ -26,15 +26,15 @@ void prefetch_ahead(const WorkMesh& w, const std::vector<QueueEntry>& order, siz
   }
   if (i + kVertex < order.size()) {
     for (int v : w.tri[size_t(order[i + kVertex].face)]) {
-      prefetch(&w.vfaces[size_t(v)]);
+      prefetch(w.vfaces.record(size_t(v)));
       prefetch(&w.pos[size_t(v)]);
       prefetch(&w.boundary[size_t(v)]);
     }
   }
   if (i + kList < order.size()) {
     for (int v : w.tri[size_t(order[i + kList].face)]) {
-      const std::vector<int>& list = w.vfaces[size_t(v)];
-      if (!list.empty()) prefetch(list.data());
+      const FaceLists::Span list = w.vfaces[size_t(v)];
+      if (!list.empty()) prefetch(list.begin());
     }
   }
   if (i + kCorona < order.size()) {
@@ -99,7 +99,7 @@ void Speculation::prefetch(const WorkMesh& w, size_t i) const {
   }
   for (int v : p.reads) {
     reduce::prefetch(&changed_[size_t(v)]);
-    reduce::prefetch(&w.vfaces[size_t(v)]);
+    reduce::prefetch(w.vfaces.record(size_t(v)));
   }
 }
 

@@ -46,13 +46,9 @@ WorkMesh build_work_mesh(const Mesh& mesh) {
   w.face_stamp.assign(nt, 0);
   w.face_pass.assign(nt, 0);
   w.live_faces = (long long)nt;
-  std::vector<int> degree(nv, 0);
-  for (const auto& t : w.tri)
-    for (int v : t) ++degree[size_t(v)];
-  w.vfaces.resize(nv);
-  for (size_t v = 0; v < nv; ++v) w.vfaces[v].reserve(size_t(degree[v]));
+  w.vfaces.reset(nv);
   for (size_t t = 0; t < nt; ++t)
-    for (int v : w.tri[t]) w.vfaces[size_t(v)].push_back(int(t));
+    for (int v : w.tri[t]) w.vfaces.push_back(size_t(v), int(t));
   w.vertex_alive.assign(nv, 1);
   w.boundary.assign(nv, 0);
   tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = on_boundary(w, int(v)) ? 1 : 0; });

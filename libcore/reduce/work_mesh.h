@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "../mesh.h"
+#include "face_lists.h"
 
 namespace isoform::reduce {
 
@@ -28,7 +29,7 @@ struct WorkMesh {
   std::vector<uint32_t> face_stamp;  // changes whenever the face does
   std::vector<int> face_pass;        // the pass that made the face (0: input)
   std::vector<double> weight;        // ω (5.23), set when the face is made (queue.h)
-  std::vector<std::vector<int>> vfaces;
+  FaceLists vfaces;  // per vertex: the faces around it
   std::vector<uint8_t> vertex_alive, boundary;
   // Per vertex: absolute curvature |k1| + |k2| (the weights), and the rest
   // of the curvature and the normal for the result.
