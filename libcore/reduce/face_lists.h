@@ -9,11 +9,18 @@
 // record is one cache line. Lists keep the order of std::vector's
 // push_back and erase (the faces' order decides ties downstream), so the
 // reduction gives the same bits either way. Valences above 15 are rare.
+//
+// Edits of different vertices' lists may run side by side (the reduction's
+// commits, speculate.h): a short list is its own record, and every step on
+// a long list takes a lock, since the long lists share their container.
+// Reading a list (operator[]) while another thread edits is not allowed.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace isoform::reduce {
@@ -37,6 +44,7 @@ class FaceLists {
     records_.assign(vertices, Record{});
     spill_.clear();
     free_spill_.clear();
+    if (!lock_) lock_ = std::make_unique<std::mutex>();
   }
   size_t vertex_count() const { return records_.size(); }
 
@@ -54,6 +62,7 @@ class FaceLists {
       r.slot[r.count++] = face;
       return;
     }
+    const std::lock_guard<std::mutex> hold(*lock_);
     if (r.count == kInline) {  // moves out of the record
       size_t at = spill_.size();
       if (!free_spill_.empty()) {
@@ -79,6 +88,7 @@ class FaceLists {
       --r.count;
       return;
     }
+    const std::lock_guard<std::mutex> hold(*lock_);
     const size_t index = size_t(r.slot[0]);
     std::vector<int>& list = spill_[index];
     list.erase(std::find(list.begin(), list.end(), face));
@@ -88,7 +98,10 @@ class FaceLists {
 
   void clear(size_t v) {
     Record& r = records_[v];
-    if (r.count > kInline) release(size_t(r.slot[0]));
+    if (r.count > kInline) {
+      const std::lock_guard<std::mutex> hold(*lock_);
+      release(size_t(r.slot[0]));
+    }
     r.count = 0;
   }
 
@@ -110,6 +123,7 @@ class FaceLists {
   std::vector<Record> records_;
   std::vector<std::vector<int>> spill_;
   std::vector<size_t> free_spill_;
+  std::unique_ptr<std::mutex> lock_;  // of spill_ and free_spill_
 };
 
 }  // namespace isoform::reduce

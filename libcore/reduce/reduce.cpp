@@ -18,6 +18,8 @@
 #include <cmath>
 #include <tuple>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include "../curvature/surface_curvature.h"
@@ -115,6 +117,8 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
 constexpr size_t kBatch = 128;
 // How far ahead of the removal being applied its successors' data is asked for.
 constexpr size_t kApplyAhead = 3;
+// Accepted removals committed per task.
+constexpr size_t kCommitGrain = 4;
 
 // The passes of Remark 5.9 until the target count, a tolerance stop, or a
 // pass that removes nothing (Remark 5.11).
@@ -129,10 +133,25 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   const long long start = w.live_faces;
   long long tries = 0;
   stats.stop_reason = 0;
+  // NOTE: a batch's removals are decided one at a time in the queue's order
+  // (accept: the counts and the tracker's sums) and their changes made
+  // together (commit), side by side: removals of one batch that are both
+  // accepted share no platelet vertex (the second read none that the first
+  // changed, speculate.h), so their commits write disjoint data. An entry
+  // whose reads an accepted removal changed waits for the commits first.
+  std::vector<const reduce::Proposal*> pending;
   while (w.live_faces > target) {
     const int pass = ++stats.passes;
     long long removed = 0, deferred = 0;
     bool stop = false, reached = false;
+    const auto commit_pending = [&] {
+      if (pending.empty()) return;
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, pending.size(), kCommitGrain),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t k = r.begin(); k != r.end(); ++k) remover.commit(*pending[k], pass);
+                        });
+      pending.clear();
+    };
     const std::vector<reduce::QueueEntry>& order = queue.next_pass(w, pass);
     for (size_t begin = 0; begin < order.size() && !stop && !reached; begin += kBatch) {
       const size_t end = std::min(order.size(), begin + kBatch);
@@ -145,15 +164,18 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
           break;
         }
         const size_t f = size_t(e.face);
-        if (!ahead.was_current(i) || !w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
+        if (!ahead.was_current(i)) continue;
+        if (ahead.read_changed(i)) commit_pending();
+        if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
         if ((++tries & 1023) == 0) {
           if (progress.cancelled()) throw Cancelled("reduce: cancelled");
           progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));
         }
         const reduce::Proposal& proposal = ahead.current(remover, i);
-        const Outcome o = remover.apply(proposal, pass);
+        const Outcome o = remover.accept(proposal);
         if (o == Outcome::Removed) {
           ahead.applied(proposal);
+          pending.push_back(&proposal);
           ++removed;
           ++stats.removals;
           continue;
@@ -165,6 +187,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
           break;
         }
       }
+      commit_pending();
     }
     if (stop) {
       stats.stop_reason = 3;

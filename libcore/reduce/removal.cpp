@@ -211,22 +211,25 @@ void Remover::new_weights(Proposal& q) const {
   }
 }
 
-Outcome Remover::apply(const Proposal& p, int pass) {
+Outcome Remover::accept(const Proposal& p) {
   if (p.outcome != Outcome::Removed) return p.outcome;
   if (tracker_.active()) {
     bool rms_stop = false, deferred = false;
     if (!tracker_.check(p.pending, &rms_stop, &deferred))
       return rms_stop ? Outcome::RmsStop : deferred ? Outcome::Deferred : Outcome::Tolerance;
+    tracker_.accept(p.pending);
   }
   swaps_ += p.swaps;
   vertex_points_ += p.at_vertex ? 1 : 0;
-  commit(p, pass);
+  w_.live_faces -= (long long)(p.platelet.faces.size() - p.faces.tri.size());
   return Outcome::Removed;
 }
 
 // Replaces the platelet's faces by the new ones: p takes T's first vertex
 // index (5.40), the other two vertices of T go, new faces reuse the lowest
-// old ids, and every changed face gets a new stamp and the current pass.
+// old ids (p.faces is sorted), and every changed face gets a new stamp and
+// the current pass. It writes only the platelet's faces and vertices and the
+// original vertices under those faces.
 void Remover::commit(const Proposal& q, int pass) {
   const Platelet& p = q.platelet;
   const LocalFaces& faces = q.faces;
@@ -238,7 +241,6 @@ void Remover::commit(const Proposal& q, int pass) {
     }
   for (int v : p.a) w_.vfaces.clear(size_t(v));
   w_.vertex_alive[size_t(p.a[1])] = w_.vertex_alive[size_t(p.a[2])] = 0;
-  ids_.assign(p.faces.begin(), p.faces.begin() + long(faces.tri.size()));
   for (size_t i = 0; i < p.faces.size(); ++i) {
     const size_t id = size_t(p.faces[i]);
     ++w_.face_stamp[id];
@@ -250,7 +252,6 @@ void Remover::commit(const Proposal& q, int pass) {
     w_.face_pass[id] = pass;
     for (int v : faces.tri[i]) w_.vfaces.push_back(size_t(v), int(id));
   }
-  w_.live_faces -= (long long)(p.faces.size() - faces.tri.size());
   const size_t a = size_t(p.a[0]);
   w_.pos[a] = q.point;
   w_.boundary[a] = p.closed ? 0 : 1;
@@ -263,8 +264,8 @@ void Remover::commit(const Proposal& q, int pass) {
     w_.d1[3 * a + size_t(k)] = float(r.d1(k));
     w_.d2[3 * a + size_t(k)] = float(r.d2(k));
   }
-  for (size_t i = 0; i < ids_.size(); ++i) w_.weight[size_t(ids_[i])] = q.weights[i];
-  if (tracker_.active()) tracker_.commit(p, q.pending, ids_);
+  for (size_t i = 0; i < faces.tri.size(); ++i) w_.weight[size_t(p.faces[i])] = q.weights[i];
+  if (tracker_.active()) tracker_.relink(p, q.pending, p.faces.data());
 }
 
 }  // namespace isoform::reduce

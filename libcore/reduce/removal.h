@@ -39,10 +39,14 @@ class Remover {
   // Computes the removal of face f into `out`, changing nothing (so several
   // may run side by side).
   void propose(int f, Proposal& out) const;
-  // Makes a proposal computed against the mesh as it is now: the tracker's
-  // checks that depend on every removal so far, then the commit, whose faces
-  // belong to `pass`.
-  Outcome apply(const Proposal& p, int pass);
+  // Decides a proposal computed against the mesh as it is now: the
+  // tracker's checks that depend on every removal so far. Removed: it is
+  // counted (the live faces, the tracker's sums) and must be committed
+  // before anything reads its platelet again.
+  Outcome accept(const Proposal& p);
+  // Makes an accepted removal's changes, its new faces belonging to `pass`.
+  // Removals whose platelets share no vertex may be committed side by side.
+  void commit(const Proposal& p, int pass);
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
@@ -55,12 +59,10 @@ class Remover {
   bool domain_kept(const Platelet& p, const Eigen::Vector3d& point) const;
   bool faces_ok(const Proposal& p, const Frame& frame, const Eigen::Vector3d& point) const;
   void new_weights(Proposal& p) const;
-  void commit(const Proposal& p, int pass);
 
   WorkMesh& w_;
   ReduceOptions options_;
   Tracker tracker_;
-  std::vector<int> ids_;
   long long swaps_ = 0, vertex_points_ = 0;
 };
 

@@ -77,11 +77,15 @@ void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::
       tbb::simple_partitioner());
 }
 
+bool Speculation::read_changed(size_t i) const {
+  for (int v : slots_[i - begin_].reads)
+    if (changed_[size_t(v)] == batch_) return true;
+  return false;
+}
+
 const Proposal& Speculation::current(const Remover& remover, size_t i) {
   Proposal& p = slots_[i - begin_];
-  bool fresh = computed_[i - begin_] != 0;
-  for (size_t k = 0; fresh && k < p.reads.size(); ++k) fresh = changed_[size_t(p.reads[k])] != batch_;
-  if (!fresh) {
+  if (!computed_[i - begin_] || read_changed(i)) {
     remover.propose((*order_)[i].face, p);
     computed_[i - begin_] = 1;
   }

@@ -36,6 +36,9 @@ class Speculation {
   // Was entry i current when the batch began? (One that was not is not now:
   // stamps only grow, dead faces stay dead, a face made in a pass keeps it.)
   bool was_current(size_t i) const { return computed_[i - begin_] != 0; }
+  // Did a removal applied in this batch change what entry i's removal read?
+  // (When not, neither did it change entry i's face.)
+  bool read_changed(size_t i) const;
   // The removal of entry i of the batch as it would be computed now: the
   // one computed ahead when nothing it read has changed since, else
   // computed again.

@@ -195,7 +195,13 @@ bool Tracker::check(const TrackerPending& t, bool* rms_stop, bool* deferred) {
   return true;
 }
 
-void Tracker::commit(const Platelet& p, const TrackerPending& t, const std::vector<int>& ids) {
+void Tracker::accept(const TrackerPending& t) {
+  sum_err2_ = pending_sum_;
+  touched_count_ += t.fresh;
+  max_distance_ = pending_max_;
+}
+
+void Tracker::relink(const Platelet& p, const TrackerPending& t, const int* ids) {
   for (int f : p.faces) head_[size_t(f)] = -1;  // re-linked below
   for (size_t i = 0; i < t.vertex.size(); ++i) {
     const int v = t.vertex[i], f = ids[size_t(t.face[i])];
@@ -206,9 +212,6 @@ void Tracker::commit(const Platelet& p, const TrackerPending& t, const std::vect
       touched_[size_t(v)] = 1;
     }
   }
-  sum_err2_ = pending_sum_;
-  touched_count_ += t.fresh;
-  max_distance_ = pending_max_;
 }
 
 }  // namespace isoform::reduce

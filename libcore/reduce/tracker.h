@@ -73,9 +73,13 @@ class Tracker {
   // moved off so far (0: off). The caller relaxes it when a pass stalls.
   void set_guard(double factor) { guard_ = factor; }
   double guard() const { return guard_; }
-  // Applies the last successful check of the removal of p's faces; ids[i]
-  // is the face id given to faces[i].
-  void commit(const Platelet& p, const TrackerPending& t, const std::vector<int>& ids);
+  // Takes the last successful check's sums as the tracker's: call right
+  // after it, in the removals' order.
+  void accept(const TrackerPending& t);
+  // Hands the original vertices of the removal of p's faces to their new
+  // faces (ids[i] is the face id given to faces[i]). Removals whose
+  // platelets share no face may be relinked side by side.
+  void relink(const Platelet& p, const TrackerPending& t, const int* ids);
 
   double max_distance() const { return max_distance_; }
   double rms() const;

@@ -8,6 +8,8 @@
 #include <limits>
 #include <set>
 
+#include <tbb/global_control.h>
+
 #include "libcore/errors.h"
 #include "libcore/reduce/reduce.h"
 #include "libcore/reduce/tracker.h"
@@ -343,6 +345,51 @@ TEST(Reduce, CancelLeavesTheMeshUnchanged) {
   o.keep_fraction = 0.1;
   EXPECT_THROW(reduce_mesh(m, o, Progress(&sink)), Cancelled);
   EXPECT_EQ(m.triangles, before.triangles);
+}
+
+// The reduction computes removals side by side and commits a batch's
+// accepted removals side by side (speculate.h, reduce.cpp): one thread and
+// every thread give the same mesh to the bit, with the tracker off, tracking
+// a distance tolerance, and tracking a graph's RMS.
+TEST(Reduce, OneThreadAndAllThreadsGiveTheSameBits) {
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    ReduceOptions options;
+    double keep;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"torus", figure510_torus(240, 120), ReduceOptions{}, 0.02});
+  {
+    ReduceOptions o;
+    o.tolerance = 0.01;
+    o.measure_error = true;
+    cases.push_back({"torus, distance tolerance", figure510_torus(160, 80), o, 0.02});
+  }
+  {
+    ReduceOptions o;
+    o.graph = true;
+    o.graph_rms_tolerance = 1e-4;
+    cases.push_back({"graph, RMS tolerance", truth::graph_mesh(graph("trigonometric"), 151), o, 0.02});
+  }
+  for (Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Mesh one = c.mesh, all = c.mesh;
+    ReduceStats s1, s2;
+    {
+      const tbb::global_control serial(tbb::global_control::max_allowed_parallelism, 1);
+      s1 = reduce(one, c.keep, c.options);
+    }
+    s2 = reduce(all, c.keep, c.options);
+    EXPECT_GT(s1.removals, 1000);
+    EXPECT_EQ(s1.removals, s2.removals);
+    EXPECT_EQ(one.triangles, all.triangles);
+    EXPECT_EQ(one.precise_points, all.precise_points);
+    EXPECT_EQ(one.points, all.points);
+    EXPECT_EQ(s1.max_distance, s2.max_distance);
+    EXPECT_EQ(s1.graph_rms, s2.graph_rms);
+    if (!c.options.graph) expect_closed_manifold(all);
+  }
 }
 
 }  // namespace
