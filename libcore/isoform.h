@@ -762,10 +762,10 @@ typedef struct isoform_reduce_options {
   double graph_rms_tolerance; /* graph only, world units: stop before the RMS height error at
                             the original vertices (5.41) exceeds it (Remark 5.10); 0 = off */
   int swaps;             /* 1 (default): diagonal swaps after the fan (Definition 5.15) */
-  int measure_error;     /* 1: track the distance of `tolerance` without bounding it, and
-                            report it in isoform_reduce_stats.max_distance; default 0
-                            (it costs time: about one point-triangle test per original
-                            vertex and removal near it) */
+  int measure_error;     /* 1: report the distance between the input and the result in
+                            isoform_reduce_stats.max_distance without bounding it (with
+                            tolerance 0: measured once on the result, a few point-triangle
+                            tests per original vertex); default 0 */
   int refine_point;      /* 1 (default): beyond the seed, move each new point along its
                             normal (graph: vertically) to the least-squares best place for
                             the original vertices under its triangles; 0: the seed's point */
@@ -792,8 +792,11 @@ typedef struct isoform_reduce_stats {
   int curvature_computed;   /* 1: the mesh had no curvature, Chapter 4 ran first */
   int stop_reason;          /* 0 target reached, 1 nothing more removable, 2 tolerance,
                                3 graph RMS tolerance */
-  double max_distance;      /* largest tracked distance, world units (tolerance or
-                               measure_error on; else 0) */
+  double max_distance;      /* world units, an upper bound of the distance of every input
+                               vertex to the result and of every result vertex to the
+                               input: with a tolerance the largest tracked in the
+                               removals, else (measure_error) measured on the result;
+                               0 when neither is on */
   double graph_rms;         /* RMS height error at the original vertices (graph RMS on) */
   /* Candidates refused when their turn came, by reason: */
   long long refused_corona;      /* corona discontinuous, cyclic or too small (Def. 5.3, 5.4) */

@@ -30,7 +30,7 @@ struct ReduceOptions {
   bool graph = false;
   double graph_rms_tolerance = 0.0;  // stop before the RMS height error (5.41) exceeds it; 0 = off
   bool swaps = true;                 // Lawson-like swaps after the fan (Definition 5.15)
-  bool measure_error = false;        // track the distance of tolerance even when it is 0 (stats only)
+  bool measure_error = false;        // report max_distance without a tolerance (measured on the result)
   // Beyond the seed: move the new point along its normal (graph: vertically)
   // to the least-squares best place for the original vertices under the new
   // triangles (Tracker::refine). Off reproduces the seed's point.
@@ -61,7 +61,7 @@ struct ReduceStats {
   long long vertex_points = 0;  // removals whose point is a vertex of T (vertex_fallback)
   int passes = 0;            // passes of Remark 5.9
   bool curvature_computed = false;  // the input had none, so Chapter 4 ran first
-  double max_distance = 0.0; // largest tracked distance (tolerance on), world units
+  double max_distance = 0.0; // distance bound at vertices, both ways (tolerance or measure_error), world units
   double graph_rms = 0.0;    // RMS height error at the original vertices (graph mode)
   int stop_reason = 0;       // 0 target reached, 1 nothing removable, 2 tolerance, 3 RMS tolerance
   ReduceRefusals refused;

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 namespace isoform::reduce {
 
@@ -96,8 +98,9 @@ bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3
   int near_vertex[kNear] = {-1, -1, -1, -1};
   double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
   const bool reuse = out.assigned_valid;
-  // An infinite tolerance only keeps the assignment, unless asked to measure.
-  const bool distances = distance_ > 0 && (std::isfinite(distance_) || measure_);
+  // Only a finite tolerance is checked per removal; a measurement without
+  // one is made on the result (measure_result).
+  const bool distances = distance_ > 0 && std::isfinite(distance_);
   out.assigned_valid = false;
   size_t index = 0;
   for (int f : p.faces)
@@ -212,6 +215,76 @@ void Tracker::relink(const Platelet& p, const TrackerPending& t, const int* ids)
       touched_[size_t(v)] = 1;
     }
   }
+}
+
+namespace {
+
+// The largest value of f(i) over [0, n), in parallel (max is exact, so the
+// result does not depend on the split).
+template <class F>
+double largest(size_t n, F&& f) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, n), 0.0,
+      [&](const tbb::blocked_range<size_t>& r, double m) {
+        for (size_t i = r.begin(); i != r.end(); ++i) m = std::max(m, f(i));
+        return m;
+      },
+      [](double a, double b) { return std::max(a, b); });
+}
+
+}  // namespace
+
+void Tracker::measure_result(const WorkMesh& w) {
+  if (!measure_ || !(distance_ > 0) || std::isfinite(distance_)) return;
+  // Each original vertex against the faces around the face it belongs to
+  // (that face's, from where its removal put it, and those sharing a vertex
+  // with it, where the surface nearest to it mostly is).
+  const auto distance_to_face = [&](const Eigen::Vector3d& x, int f) {
+    const auto& t = w.tri[size_t(f)];
+    return point_triangle_distance(x, w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
+  };
+  const double from_original = largest(w.tri.size(), [&](size_t f) {
+    double m = 0;
+    if (!w.face_alive[f]) return m;
+    for (int v = head_[f]; v >= 0; v = next_[size_t(v)]) {
+      const Eigen::Vector3d& x = original_[size_t(v)].x;
+      double d = distance_to_face(x, int(f));
+      for (int corner : w.tri[f])
+        for (int g : w.vfaces[size_t(corner)]) d = std::min(d, distance_to_face(x, g));
+      m = std::max(m, d);
+    }
+    return m;
+  });
+  // Each vertex against the original triangles around the few original
+  // vertices nearest to it among those of its faces (a subset of the
+  // original surface: again an upper bound).
+  const double to_original = largest(w.pos.size(), [&](size_t p) {
+    if (!w.vertex_alive[p] || w.vfaces[p].empty()) return 0.0;
+    constexpr int kNear = 4;
+    int near_vertex[kNear] = {-1, -1, -1, -1};
+    double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
+    for (int f : w.vfaces[p])
+      for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
+        double d2 = (original_[size_t(v)].x - w.pos[p]).squaredNorm();
+        int id = v;
+        for (int k = 0; k < kNear; ++k)
+          if (d2 < near_d2[k]) {
+            std::swap(d2, near_d2[k]);
+            std::swap(id, near_vertex[k]);
+          }
+      }
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int v : near_vertex) {
+      if (v < 0) continue;
+      for (int k = face_start_[size_t(v)]; k < face_start_[size_t(v) + 1]; ++k) {
+        const auto& t = original_tri_[size_t(face_list_[size_t(k)])];
+        nearest = std::min(nearest, point_triangle_distance(w.pos[p], original_[size_t(t[0])].x,
+                                                            original_[size_t(t[1])].x, original_[size_t(t[2])].x));
+      }
+    }
+    return std::isfinite(nearest) ? nearest : 0.0;
+  });
+  max_distance_ = std::max(from_original, to_original);
 }
 
 }  // namespace isoform::reduce

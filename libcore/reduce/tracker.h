@@ -40,6 +40,8 @@ class Tracker {
   // tracks the assignment only (for refine); `measure` also computes the
   // tracked distances then (for max_distance).
   Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolerance, bool measure);
+  // NOTE: with an infinite distance tolerance, `measure` asks for
+  // measure_result at the end; no removal computes distances then.
   bool active() const { return distance_ > 0 || rms_ > 0; }
   // Asks for the first original vertex of each platelet face early (see
   // refine): only timing depends on it.
@@ -81,6 +83,13 @@ class Tracker {
   // platelets share no face may be relinked side by side.
   void relink(const Platelet& p, const TrackerPending& t, const int* ids);
 
+  // Without a distance tolerance but asked to measure: the largest distance
+  // of the result, bounded from above at the end rather than per removal
+  // (each original vertex's distance to the face it belongs to, and each
+  // vertex's distance to the original triangles around the original
+  // vertices nearest to it among those of its faces) into max_distance().
+  // Call once, after the last removal.
+  void measure_result(const WorkMesh& w);
   double max_distance() const { return max_distance_; }
   double rms() const;
 

@@ -322,6 +322,28 @@ TEST(Reduce, DistanceToleranceBoundsOriginalVertices) {
   }
 }
 
+// Measured without a tolerance (what the CLI reports): the figure bounds the
+// distance of every original vertex to the result and of every vertex of the
+// result to the original from above, and not loosely.
+TEST(Reduce, MeasuredErrorBoundsBothDirectionsAtVertices) {
+  const Mesh original = figure510_torus(60, 30);
+  for (double keep : {0.3, 0.1}) {
+    Mesh m = original;
+    ReduceOptions o;
+    o.measure_error = true;
+    const ReduceStats s = reduce(m, keep, o);
+    double out = 0, back = 0;
+    for (size_t v = 0; v < original.vertex_count(); ++v)
+      out = std::max(out, distance_to_mesh(m, &original.precise_points[3 * v]));
+    for (size_t v = 0; v < m.vertex_count(); ++v)
+      back = std::max(back, distance_to_mesh(original, &m.precise_points[3 * v]));
+    ASSERT_GT(out, 0.0);
+    EXPECT_GE(s.max_distance, out);
+    EXPECT_GE(s.max_distance, back);
+    EXPECT_LE(s.max_distance, 1.1 * std::max(out, back));
+  }
+}
+
 TEST(Reduce, GraphRmsToleranceStopsBeforeIt) {
   const Mesh original = truth::graph_mesh(graph("paraboloid"), 51);
   Mesh m = original;
