@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "small_ldlt.h"
@@ -169,67 +170,83 @@ inline __attribute__((always_inline)) HeightFit fit_body(const double* u, const 
 }
 
 // One lane of fit_height_lanes' layout fitted alone (the rare lane the
-// four-lane factorisation cannot take).
+// side-by-side factorisation cannot take).
 template <int Lo, int Hi>
-HeightFit fit_lane_alone(const double* u, const double* v, const double* d, int lane, int count, double min_rcond) {
+HeightFit fit_lane_alone(const LaneGroup& g, int lane, double min_rcond) {
+  const int count = g.count[lane];
   std::vector<double> a(3 * size_t(count));
   for (int j = 0; j < count; ++j) {
-    a[size_t(j)] = u[4 * size_t(j) + size_t(lane)];
-    a[size_t(count + j)] = v[4 * size_t(j) + size_t(lane)];
-    a[size_t(2 * count + j)] = d[4 * size_t(j) + size_t(lane)];
+    a[size_t(j)] = g.u[4 * size_t(j) + size_t(lane)];
+    a[size_t(count + j)] = g.v[4 * size_t(j) + size_t(lane)];
+    a[size_t(2 * count + j)] = g.d[4 * size_t(j) + size_t(lane)];
   }
   return fit_body<Lo, Hi>(a.data(), a.data() + count, a.data() + 2 * count, count, min_rcond);
 }
 
-// fit_body for four point sets side by side (fit_height_lanes' layout). A
-// lane whose matrix the four-lane factorisation cannot take (a zero or
-// non-finite pivot) is fitted again alone, so every lane's result is
-// fit_body's, bit for bit.
-template <int Lo, int Hi>
-inline __attribute__((always_inline)) void fit_lanes_body(const double* u, const double* v, const double* d,
-                                                          const int (&count)[4], double min_rcond,
-                                                          HeightFit (&out)[4]) {
+// fit_body for G groups of four point sets side by side (fit_height_lanes'
+// layout), all 4 G sets in the lanes of one vector: lanes 4 g to 4 g + 3
+// are group g's. A lane whose matrix the side-by-side factorisation cannot
+// take (a zero or non-finite pivot) is fitted again alone, so every lane's
+// result is fit_body's, bit for bit.
+template <int Lo, int Hi, int G>
+inline __attribute__((always_inline)) void fit_lanes_body(const LaneGroup* group, double min_rcond,
+                                                          HeightFit (*out)[4]) {
   using M = Model<Lo, Hi>;
-  constexpr int kTerms = M::kTerms;
-  const int most = std::max(std::max(count[0], count[1]), std::max(count[2], count[3]));
-  auto at = [](const double* a, int j) {
+  using V = std::conditional_t<G == 1, Quad, Lanes8>;
+  constexpr int kTerms = M::kTerms, kLanes = 4 * G;
+  int most = 0;
+  for (int g = 0; g < G; ++g)
+    for (int c : group[g].count) most = std::max(most, c);
+  auto quad = [](const double* a, int j) {
     Quad q;
     __builtin_memcpy(&q, a + 4 * size_t(j), sizeof(q));
     return q;
   };
+  // Point j of every group: the groups' quads joined in registers (through
+  // memory, a wide load of two narrow stores would wait for both).
+  auto at = [&](const double* LaneGroup::*array, int j) {
+    if constexpr (G == 1)
+      return quad(group[0].*array, j);
+    else
+      return __builtin_shufflevector(quad(group[0].*array, j), quad(group[1].*array, j), 0, 1, 2, 3, 4, 5, 6, 7);
+  };
   // scale_of in every lane: the largest |(u, v)| (the zeros of the padding
   // leave it as it is), as std::max takes it.
-  Quad r2 = {0.0, 0.0, 0.0, 0.0};
+  V r2 = {};
   for (int j = 0; j < most; ++j) {
-    const Quad x = at(u, j), y = at(v, j), q = x * x + y * y;
+    const V x = at(&LaneGroup::u, j), y = at(&LaneGroup::v, j), q = x * x + y * y;
     r2 = r2 < q ? q : r2;
   }
-  double scale[4];
-  bool live[4];
-  Quad inv = {0.0, 0.0, 0.0, 0.0};
-  for (int l = 0; l < 4; ++l) {
-    out[l] = HeightFit{};
+  double scale[kLanes];
+  bool live[kLanes], any = false;
+  V inv = {};
+  for (int l = 0; l < kLanes; ++l) {
+    out[l / 4][l % 4] = HeightFit{};
     scale[l] = std::sqrt(r2[l]);
-    live[l] = count[l] >= kTerms && scale[l] > 0.0 && std::isfinite(scale[l]);
+    live[l] = group[l / 4].count[l % 4] >= kTerms && scale[l] > 0.0 && std::isfinite(scale[l]);
     if (live[l]) inv[l] = 1.0 / scale[l];
+    any = any || live[l];
   }
-  if (!(live[0] || live[1] || live[2] || live[3])) return;
-  Quad m[M::kMoments] = {}, r[kTerms] = {};
-  for (int j = 0; j < most; ++j) add_point<Lo, Hi>(at(u, j) * inv, at(v, j) * inv, at(d, j), m, r);
+  if (!any) return;
+  V m[M::kMoments] = {}, r[kTerms] = {};
+  for (int j = 0; j < most; ++j)
+    add_point<Lo, Hi>(at(&LaneGroup::u, j) * inv, at(&LaneGroup::v, j) * inv, at(&LaneGroup::d, j), m, r);
   static const GramIndex<Lo, Hi> index;
-  SmallLdltLanes<kTerms> ldlt;
-  bool factored[4];
+  SmallLdltLanes<kTerms, V> ldlt;
+  bool factored[kLanes];
   ldlt.factor(m, index.at, factored);
-  double c[4][kTerms];
-  double* x[4] = {c[0], c[1], c[2], c[3]};
+  double c[kLanes][kTerms];
+  double* x[kLanes];
+  for (int l = 0; l < kLanes; ++l) x[l] = c[l];
   ldlt.solve(r, x);
-  for (int l = 0; l < 4; ++l) {
+  for (int l = 0; l < kLanes; ++l) {
     if (!live[l]) continue;
+    HeightFit& o = out[l / 4][l % 4];
     if (!factored[l]) {
-      out[l] = fit_lane_alone<Lo, Hi>(u, v, d, l, count[l], min_rcond);
+      o = fit_lane_alone<Lo, Hi>(group[l / 4], l % 4, min_rcond);
       continue;
     }
-    if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, out[l])) finish<Lo, Hi>(c[l], scale[l], out[l]);
+    if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, o)) finish<Lo, Hi>(c[l], scale[l], o);
   }
 }
 
@@ -250,40 +267,52 @@ ISOFORM_AVX_TARGET HeightFit fit_avx(const double* u, const double* v, const dou
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
 template <int Lo, int Hi>
-ISOFORM_AVX_TARGET void fit_lanes_avx(const double* u, const double* v, const double* d, const int (&count)[4],
-                                      double min_rcond, HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
+ISOFORM_AVX_TARGET void fit_lanes_avx(const LaneGroup* group, double min_rcond, HeightFit (*out)[4]) {
+  fit_lanes_body<Lo, Hi, 1>(group, min_rcond, out);
 }
 template <int Lo, int Hi>
 ISOFORM_AVX512_TARGET HeightFit fit_avx512(const double* u, const double* v, const double* d, int count,
                                            double min_rcond) {
   return fit_body<Lo, Hi>(u, v, d, count, min_rcond);
 }
-template <int Lo, int Hi>
-ISOFORM_AVX512_TARGET void fit_lanes_avx512(const double* u, const double* v, const double* d,
-                                            const int (&count)[4], double min_rcond, HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
+template <int Lo, int Hi, int G>
+ISOFORM_AVX512_TARGET void fit_lanes_avx512(const LaneGroup* group, double min_rcond, HeightFit (*out)[4]) {
+  fit_lanes_body<Lo, Hi, G>(group, min_rcond, out);
 }
 
 #endif
 
 template <int Lo, int Hi>
-void fit_lanes_plain(const double* u, const double* v, const double* d, const int (&count)[4], double min_rcond,
-                     HeightFit (&out)[4]) {
-  fit_lanes_body<Lo, Hi>(u, v, d, count, min_rcond, out);
+void fit_lanes_plain(const LaneGroup* group, double min_rcond, HeightFit (*out)[4]) {
+  fit_lanes_body<Lo, Hi, 1>(group, min_rcond, out);
 }
 
-template <int Lo, int Hi>
-void fit_lanes(const double* u, const double* v, const double* d, const int (&count)[4], double min_rcond,
-               HeightFit (&out)[4]) {
+// G groups: with AVX-512 all in one vector (G = 2: eight lanes), else one
+// group after another.
+template <int Lo, int Hi, int G>
+void fit_lanes(const LaneGroup* group, double min_rcond, HeightFit (*out)[4]) {
 #ifdef ISOFORM_AVX_CLONE
-  switch (vector_level()) {
-    case 2: return fit_lanes_avx512<Lo, Hi>(u, v, d, count, min_rcond, out);
-    case 1: return fit_lanes_avx<Lo, Hi>(u, v, d, count, min_rcond, out);
-    default: break;
-  }
+  if (vector_level() == 2) return fit_lanes_avx512<Lo, Hi, G>(group, min_rcond, out);
 #endif
-  fit_lanes_plain<Lo, Hi>(u, v, d, count, min_rcond, out);
+  for (int g = 0; g < G; ++g) {
+#ifdef ISOFORM_AVX_CLONE
+    if (vector_level() == 1) {
+      fit_lanes_avx<Lo, Hi>(group + g, min_rcond, out + g);
+      continue;
+    }
+#endif
+    fit_lanes_plain<Lo, Hi>(group + g, min_rcond, out + g);
+  }
+}
+
+template <int G>
+void fit_groups(FitModel model, const LaneGroup* group, double min_rcond, HeightFit (*out)[4]) {
+  switch (model) {
+    case FitModel::SeedQuadratic: return fit_lanes<2, 2, G>(group, min_rcond, out);
+    case FitModel::Quadric: return fit_lanes<1, 2, G>(group, min_rcond, out);
+    case FitModel::Cubic: return fit_lanes<1, 3, G>(group, min_rcond, out);
+    case FitModel::Quartic: return fit_lanes<1, 4, G>(group, min_rcond, out);
+  }
 }
 
 template <int Lo, int Hi>
@@ -323,12 +352,12 @@ HeightFit fit_height(FitModel model, const double* u, const double* v, const dou
 
 void fit_height_lanes(FitModel model, const double* u, const double* v, const double* d, const int (&count)[4],
                       HeightFit (&out)[4], double min_rcond) {
-  switch (model) {
-    case FitModel::SeedQuadratic: return fit_lanes<2, 2>(u, v, d, count, min_rcond, out);
-    case FitModel::Quadric: return fit_lanes<1, 2>(u, v, d, count, min_rcond, out);
-    case FitModel::Cubic: return fit_lanes<1, 3>(u, v, d, count, min_rcond, out);
-    case FitModel::Quartic: return fit_lanes<1, 4>(u, v, d, count, min_rcond, out);
-  }
+  const LaneGroup group = {u, v, d, {count[0], count[1], count[2], count[3]}};
+  fit_groups<1>(model, &group, min_rcond, &out);
+}
+
+void fit_height_lanes(FitModel model, const LaneGroup (&groups)[2], HeightFit (&out)[2][4], double min_rcond) {
+  fit_groups<2>(model, groups, min_rcond, out);
 }
 
 }  // namespace isoform

@@ -43,4 +43,17 @@ HeightFit fit_height(FitModel model, const double* u, const double* v, const dou
 void fit_height_lanes(FitModel model, const double* u, const double* v, const double* d, const int (&count)[4],
                       HeightFit (&out)[4], double min_rcond = 1e-10);
 
+// Four point sets in fit_height_lanes' layout.
+struct LaneGroup {
+  const double *u, *v, *d;
+  int count[4];
+};
+
+// fit_height_lanes on two groups of four sets, every set padded with zeros
+// up to the longest of all eight: out[g][l] is what fit_height gives for set
+// l of group g alone, bit for bit. With AVX-512 the eight sets run in the
+// lanes of one vector (about twice as fast as two groups one after another).
+void fit_height_lanes(FitModel model, const LaneGroup (&groups)[2], HeightFit (&out)[2][4],
+                      double min_rcond = 1e-10);
+
 }  // namespace isoform

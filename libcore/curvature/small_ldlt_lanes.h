@@ -1,7 +1,8 @@
-// SmallLdlt (small_ldlt.h) for four matrices at once, one in each lane of a
-// vector (entry k of lane l is values[k][l]): the same operations on every
-// lane, so each lane's D and solution have the bits SmallLdlt gives for that
-// matrix alone (no fused multiply-add in either, lane-wise IEEE arithmetic).
+// SmallLdlt (small_ldlt.h) for four matrices at once (V = Lanes4), or eight
+// (V = Lanes8), one in each lane of a vector (entry k of lane l is
+// values[k][l]): the same operations on every lane, so each lane's D and
+// solution have the bits SmallLdlt gives for that matrix alone (no fused
+// multiply-add in either, lane-wise IEEE arithmetic).
 #pragma once
 
 #include <cmath>
@@ -11,9 +12,13 @@
 
 namespace isoform {
 
-template <int N>
+template <int N, class V = Lanes4>
 class SmallLdltLanes {
+  using Mask = decltype(V{} < V{});  // a comparison's result: all ones or zero per lane
+
  public:
+  static constexpr int kLanes = int(sizeof(V) / sizeof(double));
+
   // Lane l factors the matrix whose entry (r, c) is values[at[r][c]][l].
   // ok[l] is false where SmallLdlt::factor would return false; that lane's
   // D is then not SmallLdlt's and must not be used.
@@ -26,16 +31,17 @@ class SmallLdltLanes {
   // (four matrices at once do not leave registers for the block). The
   // dependent chains are short (at most N - 1 updates) and many, unrolled
   // whole, so they overlap.
-  __attribute__((always_inline)) void factor(const Lanes4* values, const int (&at)[N][N], bool (&ok)[4]) {
-    Lanes4 w[N][N];      // below the diagonal: D_j L_ij, before scaling
-    Lanes4 inv[N];       // 1 / D_j
-    Mask4 good = {-1, -1, -1, -1};
-    const Lanes4 zero = splat4(0.0), huge = splat4(1.79769313486231570815e+308);
+  __attribute__((always_inline)) void factor(const V* values, const int (&at)[N][N], bool (&ok)[kLanes]) {
+    V w[N][N];  // below the diagonal: D_j L_ij, before scaling
+    V inv[N];   // 1 / D_j
+    Mask good = Mask{} - 1;
+    const V zero = V{}, huge = V{} + 1.79769313486231570815e+308;
+    const Mask magnitude = Mask{} + INT64_MAX;  // std::abs: the sign bit cleared
 #pragma GCC unroll 16
     for (int i = 0; i < N; ++i) {
 #pragma GCC unroll 16
       for (int j = 0; j <= i; ++j) {
-        Lanes4 acc = values[at[i][j]];
+        V acc = values[at[i][j]];
 #pragma GCC unroll 16
         for (int k = 0; k < j; ++k) acc -= m_[i][k] * w[j][k];
         if (j < i) {
@@ -43,39 +49,39 @@ class SmallLdltLanes {
           m_[i][j] = acc * inv[j];
         } else {
           // A pivot that is zero or not finite: SmallLdlt::factor stops.
-          const Lanes4 mag = abs4(acc);
+          const V mag = (V)((Mask)acc & magnitude);
           good &= (mag > zero) & (mag <= huge);
           m_[i][i] = acc;
           inv[i] = 1.0 / acc;
         }
       }
     }
-    for (int l = 0; l < 4; ++l) ok[l] = good[l] != 0;
+    for (int l = 0; l < kLanes; ++l) ok[l] = good[l] != 0;
   }
 
   double d(int lane, int i) const { return m_[i][i][lane]; }
 
   // The i-th entry of D in every lane.
-  Lanes4 diagonal(int i) const { return m_[i][i]; }
+  V diagonal(int i) const { return m_[i][i]; }
 
   // SmallLdlt::solve for every lane: lane l of x from lane l of b. Entry
   // by entry, as in factor(): each entry's updates in SmallLdlt's order.
-  __attribute__((always_inline)) void solve(const Lanes4* b, Lanes4* x) const {
-    Lanes4 z[N], y[N];  // L z = b, D y = z
-    const Lanes4 tiny = splat4(std::numeric_limits<double>::min()), zero = splat4(0.0);
+  __attribute__((always_inline)) void solve(const V* b, V* x) const {
+    V z[N], y[N];  // L z = b, D y = z
+    const V tiny = V{} + std::numeric_limits<double>::min(), zero = V{};
 #pragma GCC unroll 16
     for (int i = 0; i < N; ++i) {
-      Lanes4 acc = b[i];
+      V acc = b[i];
 #pragma GCC unroll 16
       for (int j = 0; j < i; ++j) acc -= m_[i][j] * z[j];
       z[i] = acc;
-      const Lanes4 dd = m_[i][i];
-      const Lanes4 mag = dd < zero ? -dd : dd;
+      const V dd = m_[i][i];
+      const V mag = dd < zero ? -dd : dd;
       y[i] = mag > tiny ? acc / dd : zero;
     }
 #pragma GCC unroll 16
     for (int i = N - 1; i >= 0; --i) {
-      Lanes4 acc = y[i];
+      V acc = y[i];
 #pragma GCC unroll 16
       for (int j = N - 1; j > i; --j) acc -= m_[j][i] * x[j];
       x[i] = acc;
@@ -83,20 +89,17 @@ class SmallLdltLanes {
   }
 
   // The same, lane l's solution into x[l][0 .. N - 1].
-  __attribute__((always_inline)) void solve(const Lanes4* b, double* const (&x)[4]) const {
-    Lanes4 y[N];
+  __attribute__((always_inline)) void solve(const V* b, double* const (&x)[kLanes]) const {
+    V y[N];
     solve(b, y);
     for (int i = 0; i < N; ++i) {
-      const Lanes4 yi = y[i];
-      x[0][i] = yi[0];
-      x[1][i] = yi[1];
-      x[2][i] = yi[2];
-      x[3][i] = yi[3];
+      const V yi = y[i];
+      for (int l = 0; l < kLanes; ++l) x[l][i] = yi[l];
     }
   }
 
  private:
-  Lanes4 m_[N][N];
+  V m_[N][N];
 };
 
 }  // namespace isoform

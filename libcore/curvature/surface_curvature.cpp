@@ -66,7 +66,7 @@ void store_lanes(VertexCurvature& c, size_t first, const SeedLanes& r) {
 }
 
 // A group of four results one by one, put side by side for store_lanes.
-void store_four(VertexCurvature& c, size_t first, const VertexFitResult (&r)[4]) {
+void store_four(VertexCurvature& c, size_t first, const VertexFitResult* r) {
   SeedLanes lanes;
   for (int l = 0; l < 4; ++l) {
     const PrincipalCurvatures& p = r[l].curvature;
@@ -144,26 +144,31 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
       return;
     }
     VertexFitScratch& s = scratch.local();
-    // Four vertices at a time (fit_seed_vertices, fit_vertices); each
-    // result is the one the one-vertex fit gives, so the grouping cannot
-    // change a bit.
-    VertexFitResult group[4];
+    // Four vertices at a time (fit_seed_vertices) or eight (fit_vertices);
+    // each result is the one the one-vertex fit gives, so the grouping
+    // cannot change a bit.
+    VertexFitResult group[8];
     SeedLanes lanes;
     SeedLanes* const as_lanes = fitted_normals.empty() ? &lanes : nullptr;
-    for (size_t first = range.begin(); first < range.end(); first += 4) {
-      const int count = int(std::min<size_t>(4, range.end() - first));
+    const size_t step = seed ? 4 : 8;
+    for (size_t first = range.begin(); first < range.end(); first += step) {
+      const int count = int(std::min<size_t>(step, range.end() - first));
       if (seed) {
-        if (fit_seed_vertices(mesh, rings, int32_t(first), count, s, group, as_lanes)) {
+        VertexFitResult four[4];
+        if (fit_seed_vertices(mesh, rings, int32_t(first), count, s, four, as_lanes)) {
           store_lanes(c, first, lanes);
           continue;
         }
+        std::copy(four, four + count, group);
       } else {
         fit_vertices(mesh, rings, int32_t(first), count, options.method, options.extra_rings, s, group);
       }
-      if (count == 4 && fitted_normals.empty())
-        store_four(c, first, group);
-      else
-        for (int i = 0; i < count; ++i) keep(first + size_t(i), group[i]);
+      for (int k = 0; k < count; k += 4) {
+        if (count - k == 4 && fitted_normals.empty())
+          store_four(c, first + size_t(k), group + k);
+        else
+          for (int i = k; i < std::min(count, k + 4); ++i) keep(first + size_t(i), group[i]);
+      }
     }
     progress.fraction(float(done.fetch_add(range.size()) + range.size()) / float(n));
   };

@@ -225,97 +225,141 @@ VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t v
   }
 }
 
-void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
-                  int extra_rings, VertexFitScratch& s, VertexFitResult (&out)[4]) {
-  // Vertex first + l in lane l of the side-by-side fit: its platelet's
-  // points at 4 j + l of s.lanes (fit_height_lanes' layout). Unused lanes
-  // get no points and a plain frame.
+namespace {
+
+// One group of four lanes of fit_vertices: vertex first + l in lane l, its
+// platelet's points at 4 j + l of its PlateletPoints (fit_height_lanes'
+// layout). Unused lanes get no points and a plain frame.
+struct LaneGroupState {
   Start st[4];
   int32_t vertex[4];
   const int32_t* ring[4] = {};
   int valence[4] = {0, 0, 0, 0}, points[4] = {0, 0, 0, 0};
   bool alone[4] = {false, false, false, false};
   Vector3d b1[4], b2[4], n[4];
-  const FitModel model = plan_of(method).model;
-  const int wanted = points_wanted(model);
+};
+
+// Steps (i) to (iii) of the group's vertices and their tangents, four at a
+// time; the widest platelet.
+int start_group(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
+                int extra_rings, int wanted, VertexFitScratch& s, RingList (&lane_rings)[4], LaneGroupState& g,
+                VertexFitResult* out) {
   for (int l = 0; l < 4; ++l) {
-    vertex[l] = first + std::min(l, count - 1);
-    b1[l] = Vector3d::UnitX();
-    b2[l] = Vector3d::UnitY();
-    n[l] = Vector3d::UnitZ();
+    g.vertex[l] = first + std::min(l, count - 1);
+    g.b1[l] = Vector3d::UnitX();
+    g.b2[l] = Vector3d::UnitY();
+    g.n[l] = Vector3d::UnitZ();
     if (l >= count) continue;
     out[l] = VertexFitResult{};
-    if (!start_vertex(mesh, rings, vertex[l], method, extra_rings, s, out[l], st[l], false)) continue;
+    if (!start_vertex(mesh, rings, g.vertex[l], method, extra_rings, s, out[l], g.st[l], false)) continue;
     // Fewer neighbours than the model wants: fewer points too.
     if (s.rings.out.size() < size_t(wanted)) {
-      alone[l] = true;
+      g.alone[l] = true;
       continue;
     }
-    std::swap(s.lane_rings[l], s.rings.out);  // the platelet moves to its lane, no copy
-    ring[l] = s.lane_rings[l].data();
-    valence[l] = int(s.lane_rings[l].size());
-    n[l] = st[l].n;
+    std::swap(lane_rings[l], s.rings.out);  // the platelet moves to its lane, no copy
+    g.ring[l] = lane_rings[l].data();
+    g.valence[l] = int(lane_rings[l].size());
+    g.n[l] = g.st[l].n;
   }
-  // The tangents of the lanes with points, four at a time.
-  {
-    Vec3Lanes e1, e2;
-    frame_lanes(vec3_lanes(n), e1, e2);
-    for (int l = 0; l < 4; ++l)
-      if (valence[l] > 0) {
-        b1[l] = {e1.x[l], e1.y[l], e1.z[l]};
-        b2[l] = {e2.x[l], e2.y[l], e2.z[l]};
-      }
-  }
-  const int widest = std::max(std::max(valence[0], valence[1]), std::max(valence[2], valence[3]));
-  if (widest == 0) {
-    for (int l = 0; l < count; ++l)
-      if (alone[l]) out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
-    return;
-  }
-  PlateletPoints& p = s.lanes;
+  Vec3Lanes e1, e2;
+  frame_lanes(vec3_lanes(g.n), e1, e2);
+  for (int l = 0; l < 4; ++l)
+    if (g.valence[l] > 0) {
+      g.b1[l] = {e1.x[l], e1.y[l], e1.z[l]};
+      g.b2[l] = {e2.x[l], e2.y[l], e2.z[l]};
+    }
+  return std::max(std::max(g.valence[0], g.valence[1]), std::max(g.valence[2], g.valence[3]));
+}
+
+// Steps (iv) to (vi) of the group's lanes into p, every lane padded with
+// zeros up to `widest` points.
+void group_coordinates(const Mesh& mesh, int wanted, int widest, const RingList (&lane_rings)[4],
+                       LaneGroupState& g, PlateletPoints& p) {
   const size_t room = 4 * (size_t(widest) + 1);
   if (p.u.size() < room) {
     p.u.resize(room);
     p.v.resize(room);
     p.d.resize(room);
   }
-  bool coincide[4];
-  coordinates_lanes(mesh, vertex, ring, valence, b1, b2, n, p, coincide);
+  bool coincide[4] = {false, false, false, false};
+  if (std::max(std::max(g.valence[0], g.valence[1]), std::max(g.valence[2], g.valence[3])) > 0)
+    coordinates_lanes(mesh, g.vertex, g.ring, g.valence, g.b1, g.b2, g.n, p, coincide);
   for (int l = 0; l < 4; ++l) {
-    if (valence[l] == 0) continue;
-    // A neighbour on the vertex: its lane again, one point after another,
-    // with that point left out.
-    const int m = coincide[l] ? local_coordinates<4>(mesh, vertex[l], s.lane_rings[l], b1[l], b2[l], n[l],
-                                                     p.u.data() + l, p.v.data() + l, p.d.data() + l)
-                              : valence[l];
-    if (m < wanted)
-      alone[l] = true;
-    else
-      points[l] = m;
-    for (int j = points[l]; j < widest; ++j)
+    if (g.valence[l] > 0) {
+      // A neighbour on the vertex: its lane again, one point after another,
+      // with that point left out.
+      const int m = coincide[l] ? local_coordinates<4>(mesh, g.vertex[l], lane_rings[l], g.b1[l], g.b2[l], g.n[l],
+                                                       p.u.data() + l, p.v.data() + l, p.d.data() + l)
+                                : g.valence[l];
+      if (m < wanted)
+        g.alone[l] = true;
+      else
+        g.points[l] = m;
+    }
+    for (int j = g.points[l]; j < widest; ++j)
       p.u[4 * size_t(j) + size_t(l)] = p.v[4 * size_t(j) + size_t(l)] = p.d[4 * size_t(j) + size_t(l)] = 0.0;
   }
-  HeightFit fit[4];
-  fit_height_lanes(model, p.u.data(), p.v.data(), p.d.data(), points, fit);
+}
+
+// Step (viii) of the group's fitted lanes; the rest through fit_vertex.
+void finish_group(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
+                  int extra_rings, VertexFitScratch& s, LaneGroupState& g, HeightFit (&fit)[4],
+                  VertexFitResult* out) {
   for (int l = 0; l < 4; ++l) {
-    if (points[l] > 0 && !fit[l].ok) alone[l] = true;
-    if (points[l] == 0 || !fit[l].ok) {  // a lane computed for nothing: zeros and a plain frame
+    if (g.points[l] > 0 && !fit[l].ok) g.alone[l] = true;
+    if (g.points[l] == 0 || !fit[l].ok) {  // a lane computed for nothing: zeros and a plain frame
       fit[l] = HeightFit{};
-      b1[l] = Vector3d::UnitX();
-      b2[l] = Vector3d::UnitY();
-      n[l] = Vector3d::UnitZ();
+      g.b1[l] = Vector3d::UnitX();
+      g.b2[l] = Vector3d::UnitY();
+      g.n[l] = Vector3d::UnitZ();
     }
   }
   PrincipalCurvatures pc[4];
-  principal_curvatures4(fit, b1, b2, n, pc);
+  principal_curvatures4(fit, g.b1, g.b2, g.n, pc);
   for (int l = 0; l < count; ++l) {
-    if (alone[l])
+    if (g.alone[l])
       // What the first fit could not settle: fit_vertex from the start
       // (its first fit fails the same way, and it goes on from there).
       out[l] = fit_vertex(mesh, rings, first + l, method, extra_rings, s);
-    else if (points[l] > 0)
+    else if (g.points[l] > 0)
       out[l].curvature = pc[l];
   }
+}
+
+}  // namespace
+
+void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
+                  int extra_rings, VertexFitScratch& s, VertexFitResult (&out)[8]) {
+  // Lanes 0-3 (vertices first to first + 3) are group 0, lanes 4-7 group 1;
+  // with four vertices or fewer, group 0 alone.
+  const int groups = count > 4 ? 2 : 1;
+  const FitModel model = plan_of(method).model;
+  const int wanted = points_wanted(model);
+  LaneGroupState g[2];
+  int widest = 0;
+  for (int k = 0; k < groups; ++k) {
+    const int in_group = std::min(4, count - 4 * k);
+    widest = std::max(widest, start_group(mesh, rings, first + 4 * k, in_group, method, extra_rings, wanted, s,
+                                          s.lane_rings[k], g[k], out + 4 * k));
+  }
+  HeightFit fit[2][4];
+  if (widest > 0) {
+    LaneGroup lanes[2];
+    for (int k = 0; k < groups; ++k) {
+      group_coordinates(mesh, wanted, widest, s.lane_rings[k], g[k],
+                        s.lanes[k]);
+      lanes[k] = {s.lanes[k].u.data(), s.lanes[k].v.data(), s.lanes[k].d.data(),
+                  {g[k].points[0], g[k].points[1], g[k].points[2], g[k].points[3]}};
+    }
+    if (groups == 2)
+      fit_height_lanes(model, lanes, fit);
+    else
+      fit_height_lanes(model, lanes[0].u, lanes[0].v, lanes[0].d, lanes[0].count, fit[0]);
+  }
+  for (int k = 0; k < groups; ++k)
+    finish_group(mesh, rings, first + 4 * k, std::min(4, count - 4 * k), method, extra_rings, s, g[k], fit[k],
+                 out + 4 * k);
 }
 
 }  // namespace isoform

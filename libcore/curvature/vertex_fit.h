@@ -19,8 +19,8 @@ struct PlateletPoints {
 struct VertexFitScratch {
   RingScratch rings;
   PlateletPoints points;
-  PlateletPoints lanes;               // fit_vertices: a group's four platelets side by side (fit_height_lanes)
-  RingList lane_rings[4];  // fit_vertices: the four platelets' vertices
+  PlateletPoints lanes[2];    // fit_vertices: each group's four platelets side by side (fit_height_lanes)
+  RingList lane_rings[2][4];  // fit_vertices: each group's four platelets' vertices
 };
 
 struct VertexFitResult {
@@ -32,11 +32,12 @@ struct VertexFitResult {
 VertexFitResult fit_vertex(const Mesh& mesh, const VertexRings& rings, int32_t vertex, CurvatureMethod method,
                            int extra_rings, VertexFitScratch& scratch);
 
-// fit_vertex for the vertices first .. first + count - 1 (count 1 to 4) into
+// fit_vertex for the vertices first .. first + count - 1 (count 1 to 8) into
 // out: the same results, bit for bit. Their first fits (the method's model
-// on its platelet, which nearly every vertex keeps) run side by side
-// (fit_height_lanes); a vertex that needs more goes through fit_vertex.
+// on its platelet, which nearly every vertex keeps) run side by side, in
+// groups of four (fit_height_lanes); a vertex that needs more goes through
+// fit_vertex.
 void fit_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, CurvatureMethod method,
-                  int extra_rings, VertexFitScratch& scratch, VertexFitResult (&out)[4]);
+                  int extra_rings, VertexFitScratch& scratch, VertexFitResult (&out)[8]);
 
 }  // namespace isoform

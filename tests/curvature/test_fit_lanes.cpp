@@ -88,6 +88,50 @@ TEST(FitLanes, SameBitsAsOneAtATime) {
   }
 }
 
+// Two groups of four side by side (eight lanes with AVX-512): each lane as
+// its set alone, with the groups' sets of different lengths, every set
+// padded to the longest of all eight.
+TEST(FitLanes, TwoGroupsSameBitsAsOneAtATime) {
+  std::mt19937 rng(9);
+  for (FitModel model : {FitModel::SeedQuadratic, FitModel::Quadric, FitModel::Cubic, FitModel::Quartic}) {
+    int fitted = 0, refused = 0;
+    for (int round = 0; round < 120; ++round) {
+      const int lanes = 5 + round % 4;  // the second group partly used
+      PointSet sets[8];
+      for (int l = 0; l < lanes; ++l) sets[l] = point_set(rng, round % 9 == l ? 1 + round % 3 : 0);
+      int most = 0;
+      for (int l = 0; l < lanes; ++l) most = std::max(most, sets[l].count());
+      std::vector<double> data[2][3];
+      LaneGroup groups[2];
+      for (int g = 0; g < 2; ++g) {
+        for (auto& a : data[g]) a.assign(4 * size_t(most), 0.0);
+        for (int k = 0; k < 4; ++k) {
+          const PointSet& p = sets[4 * g + k];
+          groups[g].count[k] = p.count();
+          for (int j = 0; j < p.count(); ++j) {
+            data[g][0][4 * size_t(j) + size_t(k)] = p.u[size_t(j)];
+            data[g][1][4 * size_t(j) + size_t(k)] = p.v[size_t(j)];
+            data[g][2][4 * size_t(j) + size_t(k)] = p.d[size_t(j)];
+          }
+        }
+        groups[g].u = data[g][0].data();
+        groups[g].v = data[g][1].data();
+        groups[g].d = data[g][2].data();
+      }
+      HeightFit out[2][4];
+      fit_height_lanes(model, groups, out);
+      for (int l = 0; l < 8; ++l) {
+        const PointSet& p = sets[l];
+        const HeightFit one = fit_height(model, p.u.data(), p.v.data(), p.d.data(), p.count());
+        EXPECT_TRUE(same_bits(one, out[l / 4][l % 4])) << "model " << int(model) << " round " << round << " lane " << l;
+        if (l < lanes) (one.ok ? fitted : refused) += 1;
+      }
+    }
+    EXPECT_GT(fitted, 300) << "model " << int(model);
+    EXPECT_GT(refused, 20) << "model " << int(model);
+  }
+}
+
 TEST(FitLanes, VerticesInGroupsMatchFitVertex) {
   std::vector<truth::Exact> exact;
   Mesh closed = truth::shape_mesh(truth::Shape::Ellipsoid, 40, 0.25, 3, exact);
@@ -101,13 +145,15 @@ TEST(FitLanes, VerticesInGroupsMatchFitVertex) {
       for (int extra : {0, 1}) {
         VertexFitScratch a, b;
         const int32_t n = int32_t(m->vertex_count());
-        for (int32_t first = 0; first < n; first += 3) {  // groups of 3 and 4, not aligned
-          const int count = std::min<int32_t>(first % 2 ? 3 : 4, n - first);
-          VertexFitResult group[4];
+        // Groups of 3, 4, 5, 7 and 8 (one group of lanes and two), not aligned.
+        const int sizes[] = {3, 4, 5, 7, 8};
+        for (int32_t first = 0, k = 0; first < n; ++k) {
+          const int count = std::min<int32_t>(sizes[k % 5], n - first);
+          VertexFitResult group[8];
           fit_vertices(*m, rings, first, count, method, extra, a, group);
           for (int i = 0; i < count; ++i)
             expect_same(fit_vertex(*m, rings, first + i, method, extra, b), group[i], size_t(first + i));
-          first += count - 3;
+          first += count;
         }
       }
   }
