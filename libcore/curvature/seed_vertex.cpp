@@ -231,6 +231,10 @@ ISOFORM_AVX_TARGET bool seed_vertices_avx(const Mesh& mesh, const VertexRings& r
                                           VertexFitScratch& s, VertexFitResult (&out)[4], SeedLanes* lanes) {
   return seed_vertices_body(mesh, rings, first, count, s, out, lanes);
 }
+ISOFORM_AVX512_TARGET bool seed_vertices_avx512(const Mesh& mesh, const VertexRings& rings, int32_t first, int count,
+                                                VertexFitScratch& s, VertexFitResult (&out)[4], SeedLanes* lanes) {
+  return seed_vertices_body(mesh, rings, first, count, s, out, lanes);
+}
 #endif
 
 }  // namespace
@@ -238,6 +242,7 @@ ISOFORM_AVX_TARGET bool seed_vertices_avx(const Mesh& mesh, const VertexRings& r
 bool fit_seed_vertices(const Mesh& mesh, const VertexRings& rings, int32_t first, int count, VertexFitScratch& s,
                        VertexFitResult (&out)[4], SeedLanes* lanes) {
 #ifdef ISOFORM_AVX_CLONE
+  if (vector_level() == 2) return seed_vertices_avx512(mesh, rings, first, count, s, out, lanes);
   if (vector_level() > 0) return seed_vertices_avx(mesh, rings, first, count, s, out, lanes);
 #endif
   return seed_vertices_plain(mesh, rings, first, count, s, out, lanes);
