@@ -147,14 +147,13 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
     // Four vertices at a time (fit_seed_vertices) or eight (fit_vertices);
     // each result is the one the one-vertex fit gives, so the grouping
     // cannot change a bit.
-    VertexFitResult group[8];
+    VertexFitResult group[8], four[4];
     SeedLanes lanes;
     SeedLanes* const as_lanes = fitted_normals.empty() ? &lanes : nullptr;
     const size_t step = seed ? 4 : 8;
     for (size_t first = range.begin(); first < range.end(); first += step) {
       const int count = int(std::min<size_t>(step, range.end() - first));
       if (seed) {
-        VertexFitResult four[4];
         if (fit_seed_vertices(mesh, rings, int32_t(first), count, s, four, as_lanes)) {
           store_lanes(c, first, lanes);
           continue;
