@@ -50,11 +50,13 @@ struct Model {
 };
 
 // Entry (r, c) of the normal equations is moment at[r][c].
+// A constant table, so that the unrolled factorisations address the
+// moments directly.
 template <int Lo, int Hi>
 struct GramIndex {
-  int at[Model<Lo, Hi>::kTerms][Model<Lo, Hi>::kTerms];
-  GramIndex() {
-    int eu[Model<Lo, Hi>::kTerms], ev[Model<Lo, Hi>::kTerms], n = 0;
+  int at[Model<Lo, Hi>::kTerms][Model<Lo, Hi>::kTerms] = {};
+  constexpr GramIndex() {
+    int eu[Model<Lo, Hi>::kTerms] = {}, ev[Model<Lo, Hi>::kTerms] = {}, n = 0;
     for (int deg = Lo; deg <= Hi; ++deg)
       for (int k = 0; k <= deg; ++k, ++n) {
         eu[n] = deg - k;
@@ -131,12 +133,11 @@ inline __attribute__((always_inline)) bool conditioned(D d, double min_rcond, He
   return lo > 0.0 && out.rcond >= min_rcond;
 }
 
-// The derivatives from the solution c of the scaled normal equations.
+// The derivatives from the solution c of the scaled normal equations (its
+// linear and quadratic coefficients, the first five or three), whose
+// entries are all finite.
 template <int Lo, int Hi>
-inline __attribute__((always_inline)) void finish(const double (&c)[Model<Lo, Hi>::kTerms], double scale,
-                                                  HeightFit& out) {
-  for (double x : c)
-    if (!std::isfinite(x)) return;
+inline __attribute__((always_inline)) void derivatives(const double* c, double scale, HeightFit& out) {
   // Back from the scaled coordinates: a coefficient of u^i v^j carries
   // scale^-(i+j). Linear terms come first (u, v), then u^2, u v, v^2.
   const int q = Lo == 1 ? 2 : 0;
@@ -151,6 +152,15 @@ inline __attribute__((always_inline)) void finish(const double (&c)[Model<Lo, Hi
   out.ok = true;
 }
 
+// derivatives() where every entry of c is finite.
+template <int Lo, int Hi>
+inline __attribute__((always_inline)) void finish(const double (&c)[Model<Lo, Hi>::kTerms], double scale,
+                                                  HeightFit& out) {
+  for (double x : c)
+    if (!std::isfinite(x)) return;
+  derivatives<Lo, Hi>(c, scale, out);
+}
+
 template <int Lo, int Hi>
 inline __attribute__((always_inline)) HeightFit fit_body(const double* u, const double* v, const double* d,
                                                          int count, double min_rcond) {
@@ -159,7 +169,7 @@ inline __attribute__((always_inline)) HeightFit fit_body(const double* u, const 
   HeightFit out;
   double scale, moment[M::kMoments], rhs[kTerms];
   if (!prepare<Lo, Hi>(u, v, d, count, scale, moment, rhs)) return out;
-  static const GramIndex<Lo, Hi> index;
+  static constexpr GramIndex<Lo, Hi> index{};
   SmallLdlt<kTerms> ldlt;
   const bool factored = ldlt.factor(moment, index.at);
   if (!conditioned<kTerms>([&](int i) { return ldlt.d(i); }, min_rcond, out) || !factored) return out;
@@ -231,14 +241,18 @@ inline __attribute__((always_inline)) void fit_lanes_body(const LaneGroup* group
   V m[M::kMoments] = {}, r[kTerms] = {};
   for (int j = 0; j < most; ++j)
     add_point<Lo, Hi>(at(&LaneGroup::u, j) * inv, at(&LaneGroup::v, j) * inv, at(&LaneGroup::d, j), m, r);
-  static const GramIndex<Lo, Hi> index;
+  static constexpr GramIndex<Lo, Hi> index{};
   SmallLdltLanes<kTerms, V> ldlt;
   bool factored[kLanes];
   ldlt.factor(m, index.at, factored);
-  double c[kLanes][kTerms];
-  double* x[kLanes];
-  for (int l = 0; l < kLanes; ++l) x[l] = c[l];
-  ldlt.solve(r, x);
+  V c[kTerms];
+  ldlt.solve(r, c);
+  // finish()'s test of every coefficient, in the lanes: a non-finite
+  // entry has all exponent bits set, so adding 2^52 to its exponent field
+  // sets the top bit (integer arithmetic: no mask built lane by lane).
+  using Bits = std::conditional_t<G == 1, Bits4, Bits8>;
+  Bits infinite = {};
+  for (int i = 0; i < kTerms; ++i) infinite |= ((Bits)c[i] & 0x7FF0000000000000u) + (uint64_t(1) << 52);
   for (int l = 0; l < kLanes; ++l) {
     if (!live[l]) continue;
     HeightFit& o = out[l / 4][l % 4];
@@ -246,7 +260,11 @@ inline __attribute__((always_inline)) void fit_lanes_body(const LaneGroup* group
       o = fit_lane_alone<Lo, Hi>(group[l / 4], l % 4, min_rcond);
       continue;
     }
-    if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, o)) finish<Lo, Hi>(c[l], scale[l], o);
+    if (conditioned<kTerms>([&](int i) { return ldlt.d(l, i); }, min_rcond, o) && !(infinite[l] >> 63)) {
+      double first[5];  // the linear and quadratic coefficients
+      for (int i = 0; i < std::min(5, kTerms); ++i) first[i] = c[i][l];
+      derivatives<Lo, Hi>(first, scale[l], o);
+    }
   }
 }
 

@@ -14,6 +14,9 @@ typedef double Lanes4 __attribute__((vector_size(32)));
 typedef int64_t Mask4 __attribute__((vector_size(32)));  // a comparison's result: all ones or zero per lane
 // Eight doubles: two groups of four side by side (the AVX-512 fits).
 typedef double Lanes8 __attribute__((vector_size(64)));
+// The bits of four or eight doubles, for integer arithmetic on them.
+typedef uint64_t Bits4 __attribute__((vector_size(32)));
+typedef uint64_t Bits8 __attribute__((vector_size(64)));
 
 #define ISOFORM_LANES_INLINE inline __attribute__((always_inline))
 

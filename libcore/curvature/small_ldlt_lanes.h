@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "lanes4.h"
 
@@ -34,8 +35,13 @@ class SmallLdltLanes {
   __attribute__((always_inline)) void factor(const V* values, const int (&at)[N][N], bool (&ok)[kLanes]) {
     V w[N][N];  // below the diagonal: D_j L_ij, before scaling
     V inv[N];   // 1 / D_j
-    Mask good = Mask{} - 1;
-    const V zero = V{}, huge = V{} + 1.79769313486231570815e+308;
+    // A pivot's magnitude is usable (finite, above zero) when its bits b
+    // lie in [1, 0x7FEFFFFFFFFFFFFF]: then neither b - 1 nor b + 2^52 has
+    // the top bit set. The top bits are collected by integer arithmetic
+    // alone (comparisons of eight lanes GCC turns into a mask built one
+    // lane at a time).
+    using Bits = std::conditional_t<sizeof(V) == sizeof(Bits4), Bits4, Bits8>;
+    Bits bad = {};
     const Mask magnitude = Mask{} + INT64_MAX;  // std::abs: the sign bit cleared
 #pragma GCC unroll 16
     for (int i = 0; i < N; ++i) {
@@ -50,13 +56,14 @@ class SmallLdltLanes {
         } else {
           // A pivot that is zero or not finite: SmallLdlt::factor stops.
           const V mag = (V)((Mask)acc & magnitude);
-          good &= (mag > zero) & (mag <= huge);
+          const Bits b = (Bits)mag;
+          bad |= (b - 1) | (b + (uint64_t(1) << 52));
           m_[i][i] = acc;
           inv[i] = 1.0 / acc;
         }
       }
     }
-    for (int l = 0; l < kLanes; ++l) ok[l] = good[l] != 0;
+    for (int l = 0; l < kLanes; ++l) ok[l] = (bad[l] >> 63) == 0;
   }
 
   double d(int lane, int i) const { return m_[i][i][lane]; }

@@ -25,7 +25,9 @@ struct PointSet {
 };
 
 // Rings of points around the origin on a quartic height field; kind 1 puts
-// them on a line (a singular system), kind 2 keeps only a few, kind 3 none.
+// them on a line (a singular system), kind 2 keeps only a few, kind 3 none,
+// kind 4 gives one point a height that is not a number (a solution that is
+// not finite from a well-conditioned system).
 PointSet point_set(std::mt19937& rng, int kind) {
   std::uniform_real_distribution<double> jitter(-0.3, 0.3);
   PointSet p;
@@ -37,6 +39,7 @@ PointSet point_set(std::mt19937& rng, int kind) {
     p.v.push_back(y);
     p.d.push_back(0.3 * x * x + 0.1 * x * y - 0.2 * y * y + x * x * x + 0.5 * x * x * y * y + 0.01 * x);
   }
+  if (kind == 4) p.d[3] = std::nan("");
   return p;
 }
 
@@ -63,7 +66,8 @@ TEST(FitLanes, SameBitsAsOneAtATime) {
     for (int round = 0; round < 200; ++round) {
       const int lanes = 1 + round % 4;
       PointSet sets[4];
-      for (int l = 0; l < lanes; ++l) sets[l] = point_set(rng, round % 7 == l ? 1 + round % 3 : 0);
+      for (int l = 0; l < lanes; ++l)
+        sets[l] = point_set(rng, round % 7 == l ? 1 + round % 3 : round % 11 == l ? 4 : 0);
       // Side by side: point j of set l at 4 j + l, zeros beyond a set's end.
       int count[4] = {0, 0, 0, 0}, most = 0;
       for (int l = 0; l < lanes; ++l) most = std::max(most, count[l] = sets[l].count());
@@ -98,7 +102,8 @@ TEST(FitLanes, TwoGroupsSameBitsAsOneAtATime) {
     for (int round = 0; round < 120; ++round) {
       const int lanes = 5 + round % 4;  // the second group partly used
       PointSet sets[8];
-      for (int l = 0; l < lanes; ++l) sets[l] = point_set(rng, round % 9 == l ? 1 + round % 3 : 0);
+      for (int l = 0; l < lanes; ++l)
+        sets[l] = point_set(rng, round % 9 == l ? 1 + round % 3 : round % 13 == l ? 4 : 0);
       int most = 0;
       for (int l = 0; l < lanes; ++l) most = std::max(most, sets[l].count());
       std::vector<double> data[2][3];
