@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -174,6 +175,7 @@ int32_t BrickContourer::push_vertex(const double* point, const double* grad) {
   for (int a = 0; a < 3; ++a) v.push_back(float(point[a]));
   for (int a = 0; a < 3; ++a) v.push_back(float(grad[a]));
   out_->on_seam.push_back(0);
+  for (int q = 0; q < 4; ++q) out_->vertex_sides.push_back(-1);
   return int32_t(v.size() / 6 - 1);
 }
 
@@ -186,6 +188,10 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
   work_.fan_links.clear();
   work_.on_seam.clear();
   work_.seam_edges = 0;
+  work_.pair_end = 0;
+  work_.lone_sides.clear();
+  work_.seam_sides.clear();
+  work_.vertex_sides.clear();
   work_.shared.clear();
   work_.stats = ContourStats();
   const size_t count = size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]);
@@ -217,6 +223,9 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
           contour_cell_tetra(i, j, k, g);
       }
     }
+  // Sides still waiting: the cell across their face was not contoured.
+  for (const int32_t e : work_.vertex_sides)
+    if (e >= 0) work_.lone_sides.push_back(uint32_t(e));
   const size_t nv = work_.vertices.size() / 6;
   if (nv >= (size_t(1) << 31) || work_.triangles.size() >= (size_t(1) << 31))
     throw Unsupported("a brick with more than 2^31 vertices");
@@ -224,6 +233,15 @@ bool BrickContourer::run(const Brick& brick, BrickMesh& out, BrickStores& store)
   out.triangles = store.faces.copy(work_.triangles.data(), work_.triangles.size());
   out.fan_links = store.faces.copy(work_.fan_links.data(), work_.fan_links.size());
   out.seam_count = work_.seam_edges;
+  if (method_ == ContourMethod::Cells) {
+    BrickSides& sides = out.sides;
+    sides.known = true;
+    sides.pairs = store.faces.copy(work_.side_pairs.data(), work_.pair_end);
+    sides.pair_count = uint32_t(work_.pair_end / 2);
+    sides.lone = store.faces.copy(work_.lone_sides.data(), work_.lone_sides.size());
+    sides.lone_count = uint32_t(work_.lone_sides.size());
+    sides.seam = store.faces.copy(work_.seam_sides.data(), work_.seam_sides.size());
+  }
   out.shared = store.faces.copy(work_.shared.data(), work_.shared.size());
   out.vertex_count = uint32_t(nv);
   out.triangle_count = uint32_t(work_.triangles.size() / 3);
@@ -356,7 +374,7 @@ void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[
     if (poly.double_face < 0) {
       // Theorem 3.4 (i): with at most one segment per face every
       // triangulation keeps Condition 3.1; a fan is one.
-      add_fan(ids, poly.size, true);
+      add_fan(ids, poly.size, &poly);
       continue;
     }
     // Theorem 3.5: fan from an extra point off the double face.
@@ -378,20 +396,79 @@ void BrickContourer::contour_cell_trilinear(int i, int j, int k, const double g[
       ++out_->stats.centroid_points;
     }
     // Triangle m's spoke (ids[m + 1], centre) is the next one's first; the
-    // spoke to ids[0] and the polygon's sides are looked up, and only sides
-    // can be seam edges (the centre is this cell's own).
-    count_sides_on_seams(ids, poly.size);
+    // spoke to ids[0] joins the last triangle to the first; side m is edge
+    // 0 of triangle m. Only sides can be seam edges (the centre is this
+    // cell's own).
+    const uint32_t t0 = uint32_t(tri.size() / 3), n = uint32_t(poly.size);
     for (int m = 0; m < poly.size; ++m) {
       tri.insert(tri.end(), {ids[m], ids[(m + 1) % poly.size], centre});
       out_->fan_links.push_back(m + 1 < poly.size ? fan_link(1, 2) : 0);
     }
+    room_for_sides(poly.size);
+    for (int m = 0; m < poly.size; ++m) add_side(ids, poly, m, 3 * (t0 + uint32_t(m)));
+    uint32_t* spoke = &out_->side_pairs[out_->pair_end];
+    spoke[0] = 3 * t0 + 2;
+    spoke[1] = 3 * (t0 + n - 1) + 1;
+    out_->pair_end += 2;
   }
 }
 
-void BrickContourer::count_sides_on_seams(const int32_t* ids, int n) {
+namespace {
+
+// Which of the 4 cell faces around a grid edge face f of a cell is, seen
+// from the cell's edge e on it (0-3, the same from both cells that share
+// the face), or -1 when e is not on f.
+struct SideSlots {
+  int8_t slot[12][6] = {};
+  constexpr SideSlots() {
+    for (int e = 0; e < 12; ++e)
+      for (int f = 0; f < 6; ++f) {
+        const int along = e / 4, axis = f / 2, o1 = (along + 1) % 3, o2 = (along + 2) % 3;
+        const int first = o1 < o2 ? o1 : o2, across = 3 - along - axis;
+        // The edge's coordinates on the other two axes, lower axis first.
+        const int at_axis = axis == first ? e & 1 : (e >> 1) & 1;
+        const int at_across = across == first ? e & 1 : (e >> 1) & 1;
+        slot[e][f] = int8_t(axis == along || at_axis != f % 2 ? -1 : 2 * (axis == first ? 0 : 1) + at_across);
+      }
+  }
+};
+constexpr SideSlots kSideSlots;
+
+}  // namespace
+
+void BrickContourer::room_for_sides(int n) {
+  std::vector<uint32_t>& pairs = out_->side_pairs;
+  const size_t need = out_->pair_end + 2 * size_t(n) + 2;
+  if (pairs.size() < need) pairs.resize(std::max(need, 2 * pairs.size()));
+}
+
+void BrickContourer::add_side(const int32_t* ids, const CellPolygon& poly, int m, uint32_t edge) {
+  const int next = m + 1 < poly.size ? m + 1 : 0;
+  const int32_t a = ids[m], b = ids[next];
   // Edges whose two ends other bricks may use become SeamEdge records.
   const std::vector<uint8_t>& seam = out_->on_seam;
-  for (int m = 0; m < n; ++m) out_->seam_edges += seam[size_t(ids[m])] & seam[size_t(ids[m + 1 < n ? m + 1 : 0])];
+  if (seam[size_t(a)] & seam[size_t(b)]) {
+    ++out_->seam_edges;
+    out_->seam_sides.push_back(edge);
+    return;
+  }
+  // Waits under its smaller vertex, in the entry of its face; the cell
+  // across the face finds it there. (A face on the brick's boundary has
+  // all its crossings shared: a seam edge, above.)
+  const bool a_lower = a < b;
+  const int slot = kSideSlots.slot[poly.edges[size_t(a_lower ? m : next)]][poly.faces[size_t(m)]];
+  if (slot < 0) throw std::logic_error("contour: a polygon side off its cell face");
+  int32_t& entry = out_->vertex_sides[4 * size_t(a_lower ? a : b) + size_t(slot)];
+  const int32_t waiting = entry;
+  if (waiting == -2) throw std::logic_error("contour: more than two cells share a polygon side");
+  // NOTE: without a branch on whether the side is the first or the second
+  // of its pair (either, as often): the pair is written in any case (add_fan
+  // made room) and kept when it is one.
+  uint32_t* pair = &out_->side_pairs[out_->pair_end];
+  pair[0] = uint32_t(waiting);
+  pair[1] = edge;
+  out_->pair_end += waiting >= 0 ? 2 : 0;
+  entry = waiting >= 0 ? -2 : int32_t(edge);
 }
 
 int32_t BrickContourer::add_centroid(const int32_t* ids, int n) {
@@ -416,13 +493,45 @@ double area2(const double* u, const double* w) {
 
 }  // namespace
 
-void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
+// add_fan's apex for a quadrilateral, the most common polygon: the same
+// eight areas (each from its apex, with the same differences) and the same
+// choice as the general search, computed without its early exits, whose
+// branches the core mispredicts about as often as it takes them.
+int BrickContourer::quad_apex(const int32_t* ids) const {
+  double p[4][3];
+  for (int m = 0; m < 4; ++m)
+    for (int a = 0; a < 3; ++a) p[m][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
+  double smallest[4];
+  for (int apex = 0; apex < 4; ++apex) {
+    const double* o = p[apex];
+    const double* q1 = p[(apex + 1) & 3];
+    const double* q2 = p[(apex + 2) & 3];
+    const double* q3 = p[(apex + 3) & 3];
+    const double u[3] = {q1[0] - o[0], q1[1] - o[1], q1[2] - o[2]};
+    const double v[3] = {q2[0] - o[0], q2[1] - o[1], q2[2] - o[2]};
+    const double w[3] = {q3[0] - o[0], q3[1] - o[1], q3[2] - o[2]};
+    smallest[apex] = std::min(std::min(HUGE_VAL, area2(u, v)), area2(v, w));
+  }
+  int best = 0;
+  double best_area = -1;
+  for (int apex = 0; apex < 4; ++apex)
+    if (smallest[apex] > best_area) {
+      best_area = smallest[apex];
+      best = apex;
+    }
+  return best;
+}
+
+void BrickContourer::add_fan(const int32_t* ids, int n, const CellPolygon* poly) {
+  const bool link = poly != nullptr;
   // NOTE: the apex whose smallest triangle is largest. Points on the edges
   // of one cell can be collinear (integer data at half-integer levels put
   // many at edge midpoints), and a fan from a fixed corner would then make
   // zero-area triangles; among the n fans at least one avoids them.
   int best = 0;
-  if (n > 3) {
+  if (n == 4) {
+    best = quad_apex(ids);
+  } else if (n > 3) {
     // The points twice over, so that (apex + m) needs no wrap.
     double p[24][3];
     for (int m = 0; m < n; ++m)
@@ -465,7 +574,15 @@ void BrickContourer::add_fan(const int32_t* ids, int n, bool link) {
   for (int m = 0; m + 3 < n; ++m) links.push_back(link ? fan_link(2, 0) : 0);
   links.push_back(0);
   if (link) {
-    count_sides_on_seams(ids, n);
+    // Side (ids[best + r], ids[best + r + 1]): edge 0 of the first
+    // triangle, edge 1 of triangle r - 1, edge 2 of the last; in this
+    // order their edges increase.
+    const uint32_t t0 = uint32_t(at / 3), last = t0 + uint32_t(n - 3);
+    room_for_sides(n);
+    for (int r = 0; r < n; ++r) {
+      const uint32_t edge = r == 0 ? 3 * t0 : r == n - 1 ? 3 * last + 2 : 3 * (t0 + uint32_t(r - 1)) + 1;
+      add_side(ids, *poly, best + r < n ? best + r : best + r - n, edge);
+    }
   } else {
     const std::vector<uint8_t>& seam = out_->on_seam;
     for (const int32_t* t = &tri[at]; t != &tri[at] + 3 * size_t(n - 2); t += 3)
@@ -483,7 +600,7 @@ void BrickContourer::contour_cell_tetra(int i, int j, int k, const double g[8]) 
     if (poly.size == 0) continue;
     int32_t ids[4];
     for (int m = 0; m < poly.size; ++m) ids[m] = edge_vertex(i, j, k, poly.edges[m][0], poly.edges[m][1]);
-    add_fan(ids, poly.size, false);
+    add_fan(ids, poly.size, nullptr);
   }
 }
 

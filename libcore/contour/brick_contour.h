@@ -24,6 +24,14 @@ struct BrickWork {
   std::vector<uint8_t> fan_links;   // per triangle: FanLink (below)
   std::vector<uint8_t> on_seam;     // per vertex: 1 when other bricks may use it
   uint32_t seam_edges = 0;          // BrickMesh::seam_count
+  // The cell method's polygon sides (BrickSides): triangle edges as written;
+  // the pairs are side_pairs[0, pair_end), the rest is room.
+  std::vector<uint32_t> side_pairs, lone_sides, seam_sides;
+  size_t pair_end = 0;
+  // Per vertex, 4 entries: a side from it (as its smaller vertex) on each of
+  // the 4 cell faces around its grid edge, waiting for the same side of the
+  // cell across: its edge, -1 (none) or -2 (paired).
+  std::vector<int32_t> vertex_sides;
   std::vector<std::pair<uint64_t, int32_t>> shared;  // (edge key, local vertex)
   ContourStats stats;
 };
@@ -45,6 +53,24 @@ struct BrickCounts {
 constexpr uint8_t kFanLinked = 0x80;
 inline uint8_t fan_link(int edge_here, int edge_next) { return uint8_t(kFanLinked | edge_here | (edge_next << 2)); }
 
+// The cell method knows, for every triangle edge that no fan link covers,
+// where its other triangle is: such an edge is a side of its cell's polygon
+// on a cell face, and the same side of the polygon in the cell across that
+// face (or, for a fan around an extra point, the spoke to the polygon's
+// first point, shared by the fan's first and last triangles). So the
+// contour pairs them as it goes, and brick_topology.h needs no lookup.
+// Edges are numbered 3 t + i, edge i being (v_i, v_i+1) of triangle t as the
+// contour wrote it.
+struct BrickSides {
+  const uint32_t* pairs = nullptr;  // two edges per pair
+  const uint32_t* lone = nullptr;   // sides whose cell across the face was not contoured
+  // Edges with both ends shared (SeamEdge records), in increasing order of
+  // their triangles; seam_count of them (BrickMesh).
+  const uint32_t* seam = nullptr;
+  uint32_t pair_count = 0, lone_count = 0;
+  bool known = false;  // false: the tetra method, whose edges are looked up
+};
+
 // A contoured brick's tables, kept in BrickStores (brick_store.h) until
 // they are merged.
 struct BrickMesh {
@@ -56,8 +82,11 @@ struct BrickMesh {
   // Triangle edges with both ends shared that no fan link covers: the
   // brick's SeamEdge records (brick_topology.h).
   uint32_t seam_count = 0;
+  BrickSides sides;
   BrickCounts counts;
 };
+
+struct CellPolygon;  // cell_polygons.h
 
 // Per-thread scratch for contouring bricks of one grid at one level.
 class BrickContourer {
@@ -77,8 +106,16 @@ class BrickContourer {
   // Appends a vertex (world point, world gradient) as floats; its index.
   int32_t push_vertex(const double* point, const double* grad);
   int32_t add_centroid(const int32_t* ids, int n);
-  void add_fan(const int32_t* ids, int n, bool link);
-  void count_sides_on_seams(const int32_t* ids, int n);
+  // Appends the fan of polygon ids[0, n); poly: the cell polygon whose
+  // points they are (cell method: sides paired), or null (tetra method:
+  // every edge left to the lookup).
+  void add_fan(const int32_t* ids, int n, const CellPolygon* poly);
+  int quad_apex(const int32_t* ids) const;
+  // Side m of poly (from ids[m] to ids[m + 1]), written as triangle edge
+  // `edge`: a seam edge, or paired with the same side of the cell across.
+  void add_side(const int32_t* ids, const CellPolygon& poly, int m, uint32_t edge);
+  // Room for the pairs of n more sides and a spoke in side_pairs.
+  void room_for_sides(int n);
   void contour_cell_trilinear(int i, int j, int k, const double g[8], int above);
   void contour_cell_tetra(int i, int j, int k, const double g[8]);
   void gather(int i, int j, int k, double g[8]) const;

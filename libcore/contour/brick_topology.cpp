@@ -11,6 +11,12 @@ namespace {
 
 int next(int i) { return i == 2 ? 0 : i + 1; }
 
+// Does triangle edge e (3 t + i) run from its smaller vertex to its larger?
+bool runs_up(const int32_t* tris, int32_t e) {
+  const int32_t t = e / 3;
+  return tris[e] < tris[3 * t + next(e - 3 * t)];
+}
+
 }  // namespace
 
 int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt,
@@ -68,19 +74,7 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
       }
     }
   }
-  // The triangles of one fan start joined under its first triangle (fan
-  // links join them below anyway): the smallest of their part, as every
-  // root is, so the links need no find.
-  root_.resize(nt);
-  for (size_t t = 0; t < nt; ++t) root_[t] = t > 0 && links[t - 1] ? root_[t - 1] : int32_t(t);
-  auto find = [&](int32_t x) {
-    while (root_[size_t(x)] != x) x = root_[size_t(x)] = root_[size_t(root_[size_t(x)])];
-    return x;
-  };
-  const auto runs_up = [&](int32_t e) {
-    const int32_t t = e / 3;
-    return tris[e] < tris[3 * t + next(e - 3 * t)];
-  };
+  start_parts(links, nt);
   for (size_t k = 0; k < group_count; ++k) {
     const Group& slot = groups_[k];
     ++counts.edges;
@@ -90,13 +84,63 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
       const int32_t t = slot.first / 3, u = slot.second / 3;
       neighbours[size_t(slot.first)] = int32_t(first_triangle) + u;
       neighbours[size_t(slot.second)] = int32_t(first_triangle) + t;
-      counts.inconsistent += runs_up(slot.first) == runs_up(slot.second);
-      const int32_t ra = find(t), rb = find(u);
-      if (ra != rb) root_[size_t(std::max(ra, rb))] = std::min(ra, rb);
+      counts.inconsistent += runs_up(tris, slot.first) == runs_up(tris, slot.second);
+      join(t, u);
     } else {
       ++counts.nonmanifold;
     }
   }
+  link_fans(tris, links, reversed, nt, first_triangle, neighbours, counts);
+  if (seams != seams_end) throw std::logic_error("contour: fewer seam edges than the brick counted");
+  total.add(counts);
+  return number_parts(nt, parts);
+}
+
+int32_t BrickTopology::run_paired(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt,
+                                  const BrickSides& sides, const int32_t* final_vertex, int64_t first_triangle,
+                                  int32_t* neighbours, int32_t* parts, TopologyCounts& total, SeamEdge* seams,
+                                  size_t seam_count) {
+  TopologyCounts counts;
+  // Edges are numbered as the contour wrote them; swapping a triangle's
+  // last two vertices turns its edge i into edge 2 - i.
+  const auto oriented = [&](uint32_t e) {
+    const uint32_t i = e % 3;
+    return int32_t(e - i + (reversed ? 2 - i : i));
+  };
+  std::fill(neighbours, neighbours + 3 * nt, -1);
+  for (size_t m = 0; m < seam_count; ++m) {
+    const int32_t at = oriented(sides.seam[m]), t = at / 3;
+    const uint64_t fa = uint64_t(final_vertex[tris[at]]), fb = uint64_t(final_vertex[tris[3 * t + next(at - 3 * t)]]);
+    seams[m] = {fa < fb ? (fa << 32) | fb : (fb << 32) | fa,
+                (uint64_t(3 * first_triangle) + uint64_t(at)) << 1 | uint64_t(fa < fb)};
+  }
+  start_parts(links, nt);
+  for (size_t m = 0; m < sides.pair_count; ++m) {
+    const int32_t a = oriented(sides.pairs[2 * m]), b = oriented(sides.pairs[2 * m + 1]);
+    const int32_t t = a / 3, u = b / 3;
+    neighbours[a] = int32_t(first_triangle) + u;
+    neighbours[b] = int32_t(first_triangle) + t;
+    counts.inconsistent += runs_up(tris, a) == runs_up(tris, b);
+    join(t, u);
+  }
+  counts.edges += (long long)sides.pair_count + (long long)sides.lone_count;
+  counts.boundary += (long long)sides.lone_count;
+  link_fans(tris, links, reversed, nt, first_triangle, neighbours, counts);
+  total.add(counts);
+  return number_parts(nt, parts);
+}
+
+void BrickTopology::start_parts(const uint8_t* links, size_t nt) {
+  // The triangles of one fan start joined under its first triangle (fan
+  // links join them anyway): the smallest of their part, as every root is,
+  // so the links need no find.
+  root_.resize(nt);
+  for (size_t t = 0; t < nt; ++t) root_[t] = t > 0 && links[t - 1] ? root_[t - 1] : int32_t(t);
+}
+
+void BrickTopology::link_fans(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt,
+                              int64_t first_triangle, int32_t* neighbours, TopologyCounts& counts) const {
+  const auto oriented = [&](int e) { return reversed ? 2 - e : e; };
   for (size_t t = 0; t + 1 < nt; ++t) {
     if (!links[t]) continue;
     const int32_t here = int32_t(3 * t) + oriented(links[t] & 3);
@@ -104,11 +148,11 @@ int32_t BrickTopology::run(const int32_t* tris, const uint8_t* links, bool rever
     ++counts.edges;
     neighbours[here] = int32_t(first_triangle) + int32_t(t) + 1;
     neighbours[there] = int32_t(first_triangle) + int32_t(t);
-    counts.inconsistent += runs_up(here) == runs_up(there);
+    counts.inconsistent += runs_up(tris, here) == runs_up(tris, there);
   }
-  if (seams != seams_end) throw std::logic_error("contour: fewer seam edges than the brick counted");
-  total.add(counts);
-  // Roots are the smallest triangle of their part: number them in order.
+}
+
+int32_t BrickTopology::number_parts(size_t nt, int32_t* parts) {
   int32_t label = 0;
   for (size_t t = 0; t < nt; ++t) {
     const int32_t r = find(int32_t(t));

@@ -10,9 +10,12 @@
 // The result is the same table compute_neighbours (topology.h) gives.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include "brick_contour.h"
 
 namespace isoform {
 
@@ -60,6 +63,11 @@ class BrickTopology {
   int32_t run(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, size_t vertex_count,
               const uint8_t* shared, const int32_t* final_vertex, int64_t first_triangle, int32_t* neighbours,
               int32_t* parts, TopologyCounts& counts, SeamEdge* seams, size_t seam_count);
+  // The same for the cell method, whose contour paired the edges that no
+  // fan link covers itself (BrickSides, brick_contour.h): no lookup.
+  int32_t run_paired(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, const BrickSides& sides,
+                     const int32_t* final_vertex, int64_t first_triangle, int32_t* neighbours, int32_t* parts,
+                     TopologyCounts& counts, SeamEdge* seams, size_t seam_count);
 
  private:
   // One undirected local edge, listed under its smaller vertex: the larger
@@ -69,6 +77,22 @@ class BrickTopology {
     int32_t other, first, second, next;
   };
   static constexpr int32_t kMore = -2;
+
+  // The triangles of each fan in one part under its first triangle.
+  void start_parts(const uint8_t* links, size_t nt);
+  // The neighbours across the fans' inner edges (fan links).
+  void link_fans(const int32_t* tris, const uint8_t* links, bool reversed, size_t nt, int64_t first_triangle,
+                 int32_t* neighbours, TopologyCounts& counts) const;
+  int32_t find(int32_t x) {
+    while (root_[size_t(x)] != x) x = root_[size_t(x)] = root_[size_t(root_[size_t(x)])];
+    return x;
+  }
+  void join(int32_t t, int32_t u) {
+    const int32_t ra = find(t), rb = find(u);
+    if (ra != rb) root_[size_t(std::max(ra, rb))] = std::min(ra, rb);
+  }
+  // Roots are the smallest triangle of their part: numbers them in order.
+  int32_t number_parts(size_t nt, int32_t* parts);
 
   std::vector<int32_t> first_;  // per local vertex: its list's first group, or -1
   std::vector<Group> groups_;   // in the order the edges are first met

@@ -240,10 +240,16 @@ void place_brick(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTa
 void brick_topology(const BrickMesh& bm, size_t b, const Offsets& o, const VertexTable& vt,
                     const MergeOrientation& orient, Mesh& mesh, std::vector<int32_t>& part_counts, SeamEdge* seams,
                     Scratch& s) {
-  s.shared.assign(bm.vertex_count, 0);
-  for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
   const int32_t* tris = oriented_triangles(bm, orient.reverse, s.triangles);
   const size_t t0 = o.triangle[b];
+  if (bm.sides.known) {
+    part_counts[b] = s.topology.run_paired(tris, bm.fan_links, orient.reverse, bm.triangle_count, bm.sides,
+                                           vt.final_index.get() + o.vertex[b], int64_t(t0), &mesh.neighbours[3 * t0],
+                                           &mesh.parts[t0], s.counts, seams + o.seam[b], bm.seam_count);
+    return;
+  }
+  s.shared.assign(bm.vertex_count, 0);
+  for (size_t m = 0; m < bm.shared_count; ++m) s.shared[size_t(bm.shared[m].second)] = 1;
   part_counts[b] = s.topology.run(tris, bm.fan_links, orient.reverse, bm.triangle_count, bm.vertex_count,
                                   s.shared.data(), vt.final_index.get() + o.vertex[b], int64_t(t0),
                                   &mesh.neighbours[3 * t0], &mesh.parts[t0], s.counts, seams + o.seam[b],
