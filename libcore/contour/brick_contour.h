@@ -141,6 +141,7 @@ class BrickContourer {
   // (undefined_). Rows are at most 64 samples long (run() checks).
   std::vector<uint64_t> above_, undefined_;
   std::vector<Vec3d> grad_;      // Zucker-Hummel gradients, lazily
+  bool four_gradients_ = false;  // has_zucker_hummel_four() (gradient.h)
   std::vector<uint8_t> has_grad_;
   std::vector<int32_t> slot_vertex_;  // per corner sample and slot: vertex or -1
 };
