@@ -502,35 +502,6 @@ double area2(const double* u, const double* w) {
 
 }  // namespace
 
-// add_fan's apex for a quadrilateral, the most common polygon: the same
-// eight areas (each from its apex, with the same differences) and the same
-// choice as the general search, computed without its early exits, whose
-// branches the core mispredicts about as often as it takes them.
-int BrickContourer::quad_apex(const int32_t* ids) const {
-  double p[4][3];
-  for (int m = 0; m < 4; ++m)
-    for (int a = 0; a < 3; ++a) p[m][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
-  double smallest[4];
-  for (int apex = 0; apex < 4; ++apex) {
-    const double* o = p[apex];
-    const double* q1 = p[(apex + 1) & 3];
-    const double* q2 = p[(apex + 2) & 3];
-    const double* q3 = p[(apex + 3) & 3];
-    const double u[3] = {q1[0] - o[0], q1[1] - o[1], q1[2] - o[2]};
-    const double v[3] = {q2[0] - o[0], q2[1] - o[1], q2[2] - o[2]};
-    const double w[3] = {q3[0] - o[0], q3[1] - o[1], q3[2] - o[2]};
-    smallest[apex] = std::min(std::min(HUGE_VAL, area2(u, v)), area2(v, w));
-  }
-  int best = 0;
-  double best_area = -1;
-  for (int apex = 0; apex < 4; ++apex)
-    if (smallest[apex] > best_area) {
-      best_area = smallest[apex];
-      best = apex;
-    }
-  return best;
-}
-
 void BrickContourer::add_fan(const int32_t* ids, int n, const CellPolygon* poly) {
   const bool link = poly != nullptr;
   // NOTE: the apex whose smallest triangle is largest. Points on the edges
@@ -538,9 +509,7 @@ void BrickContourer::add_fan(const int32_t* ids, int n, const CellPolygon* poly)
   // many at edge midpoints), and a fan from a fixed corner would then make
   // zero-area triangles; among the n fans at least one avoids them.
   int best = 0;
-  if (n == 4) {
-    best = quad_apex(ids);
-  } else if (n > 3) {
+  if (n > 3) {
     // The points twice over, so that (apex + m) needs no wrap.
     double p[24][3];
     for (int m = 0; m < n; ++m)
@@ -548,14 +517,15 @@ void BrickContourer::add_fan(const int32_t* ids, int n, const CellPolygon* poly)
         p[m][a] = p[m + n][a] = double(out_->vertices[6 * size_t(ids[m]) + size_t(a)]);
     double best_area = -1;
     for (int apex = 0; apex < n; ++apex) {
-      // The apex's smallest triangle so far; once it is no larger than the
-      // best apex's, this apex cannot win.
+      // The apex's smallest triangle. NOTE: every triangle, although the
+      // apex cannot win once its smallest is no larger than the best's:
+      // that early exit's branch went either way about as often.
       // Triangle (apex, m, m + 1) from the sides to m and m + 1; each side
       // serves two triangles and is computed once (the same differences).
       const double* o = p[apex];
       double smallest = HUGE_VAL;
       double u[3] = {p[apex + 1][0] - o[0], p[apex + 1][1] - o[1], p[apex + 1][2] - o[2]};
-      for (int m = apex + 1; m + 1 < apex + n && smallest > best_area; ++m) {
+      for (int m = apex + 1; m + 1 < apex + n; ++m) {
         const double w[3] = {p[m + 1][0] - o[0], p[m + 1][1] - o[1], p[m + 1][2] - o[2]};
         smallest = std::min(smallest, area2(u, w));
         u[0] = w[0];

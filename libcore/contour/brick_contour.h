@@ -110,7 +110,6 @@ class BrickContourer {
   // points they are (cell method: sides paired), or null (tetra method:
   // every edge left to the lookup).
   void add_fan(const int32_t* ids, int n, const CellPolygon* poly);
-  int quad_apex(const int32_t* ids) const;
   // Side m of poly (from ids[m] to ids[m + 1]), written as triangle edge
   // `edge`: a seam edge, or paired with the same side of the cell across.
   void add_side(const int32_t* ids, const CellPolygon& poly, int m, uint32_t edge);
