@@ -207,10 +207,14 @@ TEST(Contour, BrickTopologyEqualsTheWholeMeshAlgorithm) {
       again.triangles = m.triangles;
       compute_topology(again);
       EXPECT_GT(m.part_count, 10);
-      // Fans from extra points (their spokes are linked inside the fan) occur.
+      // Fans from extra points (their spokes are linked inside the fan) occur,
+      // faces with two sides, and sides whose cell across was not contoured
+      // (the array ends inside a brick: boundary edges).
       if (method == ContourMethod::Cells) {
         EXPECT_GT(m.contour.extra_points + m.contour.centroid_points, 0);
+        EXPECT_GT(m.contour.ambiguous_faces, 0);
       }
+      EXPECT_GT(m.stats.boundary_edges, 0);
       EXPECT_EQ(m.neighbours, again.neighbours);
       EXPECT_EQ(m.parts, again.parts);
       EXPECT_EQ(m.part_count, again.part_count);
