@@ -153,9 +153,12 @@ void BrickTopology::link_fans(const int32_t* tris, const uint8_t* links, bool re
 }
 
 int32_t BrickTopology::number_parts(size_t nt, int32_t* parts) {
+  // Every link points to a smaller triangle (join, start_parts), so the
+  // triangle a non-root points to is numbered already, with its root's
+  // label: no find.
   int32_t label = 0;
   for (size_t t = 0; t < nt; ++t) {
-    const int32_t r = find(int32_t(t));
+    const int32_t r = root_[t];
     parts[t] = size_t(r) == t ? label++ : parts[size_t(r)];
   }
   return label;
