@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace isoform::vdbio {
 
@@ -14,8 +15,15 @@ using openvdb::Coord;
 using Tree = openvdb::FloatTree;
 using Leaf = Tree::LeafNodeType;
 
-constexpr int kBlock = int(Leaf::DIM);  // 8: bricks and leaves share the grid
-static_assert(kBlock == 8, "brick tables below assume 8^3 leaves");
+constexpr int kBlock = int(Leaf::DIM);  // 8: candidates are found per block of the leaves' grid
+// Cells per brick and axis: 2 blocks. NOTE: against bricks of one block,
+// a brick's halo and its shared crossings and gradients on brick faces are
+// a smaller part of its work, and per-brick costs are spread over 8 times
+// the cells; on the bench's narrow-band sphere 4 blocks were slower
+// (bench/README.md).
+constexpr int kCells = 16;
+constexpr int kSpan = kCells / kBlock;  // blocks per brick and axis
+static_assert(kCells % kBlock == 0 && (kCells & (kCells - 1)) == 0, "bricks are whole, aligned blocks");
 
 // The block itself and the 7 below it: a cell whose lower corner lies in
 // one of those has an upper corner in this block.
@@ -41,7 +49,8 @@ void add_tile_shell(const openvdb::CoordBBox& tile, std::vector<Coord>& out) {
   }
 }
 
-std::vector<Coord> candidate_origins(const Tree& tree) {
+// Origins of the blocks that can hold a crossing cell (leaf_bricks.h).
+std::vector<Coord> candidate_blocks(const Tree& tree) {
   std::vector<Coord> out;
   out.reserve(size_t(tree.leafCount()) * 8);
   for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) add_with_lower_neighbours(leaf->origin(), out);
@@ -57,11 +66,25 @@ std::vector<Coord> candidate_origins(const Tree& tree) {
   return out;
 }
 
-// A brick's 11 samples per axis (origin - 1 .. origin + 9) come from the
-// blocks below (its last sample), at (all 8) and above (its first two).
-constexpr int kSamples = kBlock + 3;
-constexpr int kBlockOf[kSamples] = {0, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2};
-constexpr int kLocal[kSamples] = {7, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1};
+Coord brick_of(const Coord& c) {
+  return Coord(c.x() & ~(kCells - 1), c.y() & ~(kCells - 1), c.z() & ~(kCells - 1));
+}
+
+// The bricks that hold a candidate block, sorted.
+std::vector<Coord> brick_origins(const std::vector<Coord>& blocks) {
+  std::vector<Coord> out;
+  out.reserve(blocks.size());
+  for (const Coord& c : blocks) out.push_back(brick_of(c));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// A brick's 19 samples per axis (origin - 1 .. origin + 17) come from the
+// block below (its last sample), its own 2 blocks (all 8 of each) and the
+// block above (its first two).
+constexpr int kSamples = kCells + 3;
+constexpr int kBlocks = kSpan + 2;
 
 // One of the 27 blocks around a brick: a leaf's values, or a constant.
 struct Block {
@@ -94,32 +117,34 @@ void block_ranges(const Tree& tree, const std::vector<Coord>& origins, std::vect
   });
 }
 
-// Per brick: the range over its block and the 7 above it, which hold all
-// its corner samples. Every leaf is an origin (candidate_origins), so a
-// block that is not one lies in one tile or the background.
-void corner_ranges(const Tree& tree, const std::vector<Coord>& origins, std::vector<float>& lo,
-                   std::vector<float>& hi) {
+// Per brick: the range over the blocks that hold its corner samples
+// (origin .. origin + kCells per axis). Every leaf is a candidate block, so
+// a block that is not one lies in one tile or the background.
+void corner_ranges(const Tree& tree, const std::vector<Coord>& blocks, const std::vector<Coord>& bricks,
+                   std::vector<float>& lo, std::vector<float>& hi) {
   std::vector<float> own_lo, own_hi;
-  block_ranges(tree, origins, own_lo, own_hi);
-  lo.resize(origins.size());
-  hi.resize(origins.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+  block_ranges(tree, blocks, own_lo, own_hi);
+  lo.resize(bricks.size());
+  hi.resize(bricks.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, bricks.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
     openvdb::tree::ValueAccessor<const Tree, false> access(tree);
     for (size_t b = r.begin(); b != r.end(); ++b) {
-      float a = own_lo[b], z = own_hi[b];
-      for (int c = 1; c < 8; ++c) {
-        const Coord at = origins[b].offsetBy((c & 1) * kBlock, ((c >> 1) & 1) * kBlock, (c >> 2) * kBlock);
-        const auto it = std::lower_bound(origins.begin() + std::ptrdiff_t(b), origins.end(), at);
-        if (it != origins.end() && *it == at) {
-          const size_t o = size_t(it - origins.begin());
-          a = std::min(a, own_lo[o]);
-          z = std::max(z, own_hi[o]);
-        } else {
-          const float v = access.getValue(at);
-          a = std::min(a, v);
-          z = std::max(z, v);
-        }
-      }
+      float a = std::numeric_limits<float>::infinity(), z = -a;
+      for (int dz = 0; dz <= kSpan; ++dz)
+        for (int dy = 0; dy <= kSpan; ++dy)
+          for (int dx = 0; dx <= kSpan; ++dx) {
+            const Coord at = bricks[b].offsetBy(dx * kBlock, dy * kBlock, dz * kBlock);
+            const auto it = std::lower_bound(blocks.begin(), blocks.end(), at);
+            if (it != blocks.end() && *it == at) {
+              const size_t o = size_t(it - blocks.begin());
+              a = std::min(a, own_lo[o]);
+              z = std::max(z, own_hi[o]);
+            } else {
+              const float v = access.getValue(at);
+              a = std::min(a, v);
+              z = std::max(z, v);
+            }
+          }
       lo[b] = a;
       hi[b] = z;
     }
@@ -128,20 +153,21 @@ void corner_ranges(const Tree& tree, const std::vector<Coord>& origins, std::vec
 
 }  // namespace
 
-LeafBricks::LeafBricks(openvdb::FloatGrid::ConstPtr grid)
-    : grid_(std::move(grid)), origins_(candidate_origins(grid_->tree())) {
-  corner_ranges(grid_->tree(), origins_, corner_min_, corner_max_);
+LeafBricks::LeafBricks(openvdb::FloatGrid::ConstPtr grid) : grid_(std::move(grid)) {
+  const std::vector<Coord> blocks = candidate_blocks(grid_->tree());
+  origins_ = brick_origins(blocks);
+  corner_ranges(grid_->tree(), blocks, origins_, corner_min_, corner_max_);
 }
 
 void LeafBricks::fill(size_t index, Brick& out) const {
   const Coord origin = origins_[index];
-  out.resize({origin.x(), origin.y(), origin.z()}, {kBlock, kBlock, kBlock}, false);
+  out.resize({origin.x(), origin.y(), origin.z()}, {kCells, kCells, kCells}, false);
   // An unregistered accessor: the tree is not modified while bricks are read.
   openvdb::tree::ValueAccessor<const Tree, false> access(grid_->tree());
-  Block blocks[3][3][3];
-  for (int bz = 0; bz < 3; ++bz)
-    for (int by = 0; by < 3; ++by)
-      for (int bx = 0; bx < 3; ++bx) {
+  Block blocks[kBlocks][kBlocks][kBlocks];
+  for (int bz = 0; bz < kBlocks; ++bz)
+    for (int by = 0; by < kBlocks; ++by)
+      for (int bx = 0; bx < kBlocks; ++bx) {
         const Coord at = origin.offsetBy((bx - 1) * kBlock, (by - 1) * kBlock, (bz - 1) * kBlock);
         Block& block = blocks[bz][by][bx];
         if (const Leaf* leaf = access.probeConstLeaf(at))
@@ -149,26 +175,30 @@ void LeafBricks::fill(size_t index, Brick& out) const {
         else
           block.constant = access.getValue(at);
       }
-  // Leaf buffers hold z fastest (offset x*64 + y*8 + z); bricks hold x fastest.
-  // Per row of 11 samples: the last x of the block below, all 8 of the
-  // block, the first two of the block above.
+  // Leaf buffers hold z fastest (offset x*64 + y*8 + z); bricks hold x
+  // fastest. Sample s of an axis is index origin + s - 1.
   constexpr int kX = kBlock * kBlock;
+  const auto block_of = [](int s) { return (s - 1 + kBlock) / kBlock; };
+  const auto local = [](int s) { return (s - 1 + kBlock) % kBlock; };
   float* sample = out.samples.data();
   for (int k = 0; k < kSamples; ++k)
     for (int j = 0; j < kSamples; ++j, sample += kSamples) {
-      const Block* row = blocks[kBlockOf[k]][kBlockOf[j]];
-      const int yz = kLocal[j] * kBlock + kLocal[k];
+      const Block* row = blocks[block_of(k)][block_of(j)];
+      const int yz = local(j) * kBlock + local(k);
       sample[0] = row[0].values ? row[0].values[(kBlock - 1) * kX + yz] : row[0].constant;
-      if (const float* v = row[1].values) {
-        for (int x = 0; x < kBlock; ++x) sample[1 + x] = v[x * kX + yz];
-      } else {
-        for (int x = 0; x < kBlock; ++x) sample[1 + x] = row[1].constant;
+      for (int m = 1; m <= kSpan; ++m) {
+        float* to = sample + 1 + (m - 1) * kBlock;
+        if (const float* v = row[m].values) {
+          for (int x = 0; x < kBlock; ++x) to[x] = v[x * kX + yz];
+        } else {
+          for (int x = 0; x < kBlock; ++x) to[x] = row[m].constant;
+        }
       }
-      if (const float* v = row[2].values) {
-        sample[kBlock + 1] = v[yz];
-        sample[kBlock + 2] = v[kX + yz];
+      if (const float* v = row[kSpan + 1].values) {
+        sample[kCells + 1] = v[yz];
+        sample[kCells + 2] = v[kX + yz];
       } else {
-        sample[kBlock + 1] = sample[kBlock + 2] = row[2].constant;
+        sample[kCells + 1] = sample[kCells + 2] = row[kSpan + 1].constant;
       }
     }
 }

@@ -25,21 +25,21 @@ openvdb::FloatGrid::Ptr read_float_grid(const std::string& name) {
   return openvdb::gridPtrCast<openvdb::FloatGrid>(dynamic_cast<const VdbFile&>(*file).read_grid(0));
 }
 
-// Every brick: aligned 8^3 cells, all samples defined and equal to the
-// tree's value at their index, from origin - 1 to origin + 9.
+// Every brick: aligned 16^3 cells, all samples defined and equal to the
+// tree's value at their index, from origin - 1 to origin + 17.
 void expect_samples_match_tree(const LeafBricks& bricks) {
   const auto access = bricks.grid()->getConstAccessor();
   Brick brick;
   size_t mismatches = 0;
   for (size_t b = 0; b < bricks.brick_count(); ++b) {
     bricks.fill(b, brick);
-    ASSERT_EQ(brick.cells, (Index3{8, 8, 8}));
+    ASSERT_EQ(brick.cells, (Index3{16, 16, 16}));
     ASSERT_TRUE(brick.defined.empty());
-    ASSERT_EQ(brick.samples.size(), 11u * 11u * 11u);
-    for (int a = 0; a < 3; ++a) ASSERT_EQ(brick.origin[a] % 8, 0);
-    for (int k = -1; k <= 9; ++k)
-      for (int j = -1; j <= 9; ++j)
-        for (int i = -1; i <= 9; ++i) {
+    ASSERT_EQ(brick.samples.size(), 19u * 19u * 19u);
+    for (int a = 0; a < 3; ++a) ASSERT_EQ(brick.origin[a] % 16, 0);
+    for (int k = -1; k <= 17; ++k)
+      for (int j = -1; j <= 17; ++j)
+        for (int i = -1; i <= 17; ++i) {
           const Coord at(brick.origin[0] + i, brick.origin[1] + j, brick.origin[2] + k);
           mismatches += brick.value(i, j, k) != access.getValue(at);
         }
@@ -49,7 +49,7 @@ void expect_samples_match_tree(const LeafBricks& bricks) {
 
 // Every cell (lower corner c) in the active bounding box grown by one whose
 // corners reach the isovalue from both sides lies in a brick; bricks are
-// aligned, so the brick holding c starts at c rounded down to 8.
+// aligned, so the brick holding c starts at c rounded down to 16.
 void expect_crossings_covered(const LeafBricks& bricks, float iso) {
   const std::set<Coord> origins(bricks.origins().begin(), bricks.origins().end());
   openvdb::CoordBBox box = bricks.grid()->evalActiveVoxelBoundingBox();
@@ -77,13 +77,13 @@ void expect_crossings_covered(const LeafBricks& bricks, float iso) {
         if (lo > iso || hi < iso) continue;
         ++crossings;
         const Coord c = box.min().offsetBy(i, j, k);
-        missed += !origins.count(Coord(c.x() & ~7, c.y() & ~7, c.z() & ~7));
+        missed += !origins.count(Coord(c.x() & ~15, c.y() & ~15, c.z() & ~15));
       }
   EXPECT_GT(crossings, 0u);
   EXPECT_EQ(missed, 0u) << "of " << crossings << " crossing cells";
 }
 
-// may_cross is false only for bricks whose corner samples (0 .. 8 on each
+// may_cross is false only for bricks whose corner samples (0 .. 16 on each
 // axis) all lie on one side of iso; returns how many bricks it rules out.
 size_t expect_may_cross_keeps_crossings(const LeafBricks& bricks, double iso) {
   Brick brick;
@@ -91,9 +91,9 @@ size_t expect_may_cross_keeps_crossings(const LeafBricks& bricks, double iso) {
   for (size_t b = 0; b < bricks.brick_count(); ++b) {
     bricks.fill(b, brick);
     bool above = false, below = false;
-    for (int k = 0; k <= 8; ++k)
-      for (int j = 0; j <= 8; ++j)
-        for (int i = 0; i <= 8; ++i) (double(brick.value(i, j, k)) >= iso ? above : below) = true;
+    for (int k = 0; k <= 16; ++k)
+      for (int j = 0; j <= 16; ++j)
+        for (int i = 0; i <= 16; ++i) (double(brick.value(i, j, k)) >= iso ? above : below) = true;
     if (bricks.may_cross(b, iso)) continue;
     ++ruled_out;
     wrong += above && below;
@@ -194,13 +194,28 @@ TEST(LeafBricks, NoCandidatesFromInactiveTiles) {
   EXPECT_EQ(LeafBricks(grid).brick_count(), 0u);
 }
 
-TEST(LeafBricks, OneLeafGivesEightBricks) {
+// The leaf's block and the 7 below it, (0 or 8, 8 or 16, 16 or 24), lie
+// in the bricks (0, 0 or 16, 16).
+TEST(LeafBricks, OneLeafGivesTheBricksOfItsEightBlocks) {
   auto grid = openvdb::FloatGrid::create(0.0f);
   grid->tree().setValue(Coord(9, 17, 25), 1.0f);  // in the leaf at (8, 16, 24)
   const LeafBricks bricks(grid);
+  ASSERT_EQ(bricks.brick_count(), 2u);
+  EXPECT_EQ(bricks.origins().front(), Coord(0, 0, 16));
+  EXPECT_EQ(bricks.origins().back(), Coord(0, 16, 16));
+  expect_crossings_covered(bricks, 0.5f);
+}
+
+// A leaf at a brick's lower corner: its lower blocks lie in the 7 bricks
+// below, every one of which holds one.
+TEST(LeafBricks, LeafAtABricksCornerGivesEightBricks) {
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->tree().setValue(Coord(17, 33, -15), 1.0f);  // in the leaf at (16, 32, -16)
+  const LeafBricks bricks(grid);
   ASSERT_EQ(bricks.brick_count(), 8u);
-  EXPECT_EQ(bricks.origins().front(), Coord(0, 8, 16));
-  EXPECT_EQ(bricks.origins().back(), Coord(8, 16, 24));
+  EXPECT_EQ(bricks.origins().front(), Coord(0, 16, -32));
+  EXPECT_EQ(bricks.origins().back(), Coord(16, 32, -16));
+  expect_samples_match_tree(bricks);
   expect_crossings_covered(bricks, 0.5f);
 }
 
