@@ -32,7 +32,9 @@ void contour_bricks(const ScalarGrid& grid, double iso, ContourMethod method, co
       [&] { return Scratch{Brick(), BrickContourer(grid.index_to_world, iso, method)}; });
   std::atomic<size_t> done{0};
   std::atomic<bool> stop{false};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& r) {
+  // NOTE: a small grain: a 16^3 brick is work enough for a task, and a
+  // small grid (headsq: about 100 bricks) must still split evenly.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 2), [&](const tbb::blocked_range<size_t>& r) {
     if (stop.load(std::memory_order_relaxed)) return;
     Scratch& s = scratch.local();
     BrickStores& store = tables.stores.local();

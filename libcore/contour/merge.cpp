@@ -31,9 +31,11 @@ std::unique_ptr<T[]> uninitialised(size_t n) {
   return fresh_array<T>(n, true, true);
 }
 
+// NOTE: a small grain, so that a grid of a hundred bricks still runs on
+// every thread.
 template <class F>
 void for_each_brick(size_t n, F&& f) {
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t b = r.begin(); b != r.end(); ++b) f(b);
   });
 }

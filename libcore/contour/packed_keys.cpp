@@ -27,7 +27,7 @@ int bits_for(uint64_t n) { return n == 0 ? 0 : 64 - __builtin_clzll(n); }
 
 PackedLayout packed_layout(const std::vector<BrickMesh>& bricks, size_t vertex_count) {
   tbb::enumerable_thread_specific<Extent> extents;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, bricks.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, bricks.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     Extent& e = extents.local();
     for (size_t b = r.begin(); b != r.end(); ++b)
       for (size_t m = 0; m < bricks[b].shared_count; ++m) e.add(bricks[b].shared[m].first);
