@@ -103,11 +103,15 @@ RawLayout headsq_layout(const std::string& data_dir);
 RawLayout resampled_layout(const std::string& work_dir);
 std::string resampled_vdb_path(const std::string& work_dir);
 
+// NOTE: the defaults take the best of 30 calls per method and input (about
+// 6 minutes in all on the bench machine): single calls there move by 10-40 %
+// with the host's phases, and the best of 3 calls x 1-2 rounds moved the
+// ratios by 0.1-0.3 between runs (bench/README.md).
 struct RunOptions {
   PrepareOptions prepare;
   std::string json_path;
-  int reps = 3;
-  int rounds = 1;  // each method runs once per round, in turn
+  int reps = 10;
+  int rounds = 3;  // each method runs once per round, in turn
 };
 // Runs every (method, input) in its own child, prints the tables, writes the
 // JSON report. Returns the process exit code.
