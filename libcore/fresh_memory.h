@@ -16,9 +16,9 @@
 namespace isoform {
 
 // Makes the whole pages inside [p, p + bytes) present and writable, in 2 MB
-// pages where huge is true and the system allows them. Small ranges are
-// left alone. Runs in parallel with TBB in the calling arena when parallel
-// is true.
+// pages where huge is true and the system allows them. Ranges under 128 KB
+// are left alone. Runs in parallel with TBB in the calling arena when
+// parallel is true, in at least 4 stretches.
 void populate_pages(void* p, size_t bytes, bool parallel = true, bool huge = false);
 
 // Bytes mapped from the system and given back to it when destroyed, at any
