@@ -20,6 +20,13 @@
 
 namespace isoform::reduce {
 
+// A new face's unit normal and the length of its edges' cross product (0:
+// degenerate), computed once per face for every vertex handed to it.
+struct FaceNormal {
+  Eigen::Vector3d n{0, 0, 0};
+  double length = 0;
+};
+
 // What Tracker::refine and Tracker::measure find for one removal, before
 // anything changes: computing it reads the tracker without changing it, so
 // that removals can be computed side by side (speculate.h).
@@ -32,6 +39,7 @@ struct TrackerPending {
   std::vector<int> assigned;             // the faces refine() handed the vertices to
   bool assigned_valid = false;           // refine() ran for this removal
   std::vector<ProjectedFace> projected;  // refine's scratch
+  std::vector<FaceNormal> face_normals;  // refine's scratch
 };
 
 class Tracker {

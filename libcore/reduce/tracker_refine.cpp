@@ -48,6 +48,17 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
     prefetch(&original_[size_t(v)]);
     prefetch(&next_[size_t(v)]);
   }
+  // What each new face gives every vertex handed to it (surfaces): its
+  // unit normal, its doubled area and where p is among its corners.
+  out.face_normals.resize(graph ? 0 : faces.tri.size());
+  for (size_t i = 0; i < out.face_normals.size(); ++i) {
+    const auto& t = faces.tri[i];
+    FaceNormal& fn = out.face_normals[i];
+    const Eigen::Vector3d nn = (P(t[1]) - P(t[0])).cross(P(t[2]) - P(t[0]));
+    const double area2 = nn.squaredNorm();
+    fn.length = area2 > 0 ? std::sqrt(area2) : 0.0;
+    if (fn.length > 0) fn.n = nn / fn.length;
+  }
   out.assigned.clear();
   out.assigned_valid = true;
   for (int f : p.faces)
@@ -62,24 +73,21 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
       out.assigned.push_back(chosen);
       const auto& t = faces.tri[size_t(chosen)];
       const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
-      const Eigen::Vector3d &a = P(t[0]), &b = P(t[1]), &c = P(t[2]);
       double weight = 0, residual = 0, slope = 0;
       if (graph) {
         weight = k >= 0 ? l[k] : 0;
-        residual = x(2) - (l[0] * a(2) + l[1] * b(2) + l[2] * c(2));
+        residual = x(2) - (l[0] * P(t[0])(2) + l[1] * P(t[1])(2) + l[2] * P(t[2])(2));
         slope = weight * direction(2);
       } else {
-        const Eigen::Vector3d nn = (b - a).cross(c - a);
-        const double area2 = nn.squaredNorm();
-        if (!(area2 > 0)) continue;
-        const Eigen::Vector3d n = nn / std::sqrt(area2);
+        const FaceNormal& fn = out.face_normals[size_t(chosen)];
+        if (!(fn.length > 0)) continue;
         if (k >= 0) {
           const Eigen::Vector3d& y1 = P(t[size_t((k + 1) % 3)]);
           const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - y1).cross(x - y1);
-          weight = std::clamp(opp.dot(n) / std::sqrt(area2), 0.0, 1.0);
+          weight = std::clamp(opp.dot(fn.n) / fn.length, 0.0, 1.0);
         }
-        residual = (x - a).dot(n);
-        slope = weight * direction.dot(n);
+        residual = (x - P(t[0])).dot(fn.n);
+        slope = weight * direction.dot(fn.n);
       }
       if (weight <= 0) continue;
       num += slope * residual;
