@@ -2,10 +2,10 @@
 #include "queue.h"
 
 #include <algorithm>
+#include <cstring>
 #include <tuple>
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include "weights.h"
 
@@ -29,6 +29,47 @@ void update_weight(WorkMesh& w, int f) {
                                         w.absolute[size_t(t[2])]);
 }
 
+// The key of a weight whose unsigned order is the order of the weights
+// (negative ones too; -0 as +0, so equal weights have equal keys).
+uint64_t weight_key(double weight) {
+  if (weight == 0) weight = 0;
+  uint64_t bits;
+  std::memcpy(&bits, &weight, sizeof bits);
+  return bits >> 63 ? ~bits : bits | (uint64_t(1) << 63);
+}
+
+// Sorts entries given in increasing face order lightest first, ties by face:
+// a stable least-significant-digit radix sort of the weights' keys, 11 bits
+// a step, each step left out where every key has the same digit.
+// NOTE: O(n) in a few sweeps, against the comparison sort's log n; a pass's
+// first order (every face) took 4-5 % of a reduction's time in the sort.
+void sort_lightest_first(std::vector<QueueEntry>& v, std::vector<QueueEntry>& scratch) {
+  if (v.size() < 2048) {
+    std::sort(v.begin(), v.end(), lighter);
+    return;
+  }
+  constexpr int kBits = 11, kDigits = 1 << kBits, kSteps = (64 + kBits - 1) / kBits;
+  std::vector<uint32_t> count(size_t(kSteps) * kDigits, 0);
+  for (const QueueEntry& e : v) {
+    const uint64_t key = weight_key(e.weight);
+    for (int s = 0; s < kSteps; ++s) ++count[size_t(s) * kDigits + ((key >> (s * kBits)) & (kDigits - 1))];
+  }
+  scratch.resize(v.size());
+  for (int s = 0; s < kSteps; ++s) {
+    uint32_t* c = &count[size_t(s) * kDigits];
+    const uint64_t first = (weight_key(v.front().weight) >> (s * kBits)) & (kDigits - 1);
+    if (c[first] == v.size()) continue;  // one digit for all
+    uint32_t at = 0;
+    for (int d = 0; d < kDigits; ++d) {
+      const uint32_t n = c[d];
+      c[d] = at;
+      at += n;
+    }
+    for (const QueueEntry& e : v) scratch[c[(weight_key(e.weight) >> (s * kBits)) & (kDigits - 1)]++] = e;
+    v.swap(scratch);
+  }
+}
+
 }  // namespace
 
 void compute_weights(WorkMesh& w) {
@@ -41,7 +82,7 @@ const std::vector<QueueEntry>& PassQueue::next_pass(const WorkMesh& w, int pass)
     order_.clear();
     for (size_t f = 0; f < w.tri.size(); ++f)
       if (w.face_alive[f]) order_.push_back({w.weight[f], int(f), w.face_stamp[f]});
-    tbb::parallel_sort(order_.begin(), order_.end(), lighter);
+    sort_lightest_first(order_, merged_);
     return order_;
   }
   // The faces of the last pass's removals that are still there, sorted; and
@@ -64,7 +105,7 @@ const std::vector<QueueEntry>& PassQueue::next_pass(const WorkMesh& w, int pass)
       const size_t f = 64 * k + size_t(__builtin_ctzll(bits));
       fresh_.push_back({w.weight[f], int(f), w.face_stamp[f]});
     }
-  tbb::parallel_sort(fresh_.begin(), fresh_.end(), lighter);
+  sort_lightest_first(fresh_, merged_);
   // The older faces keep their order; the changed and removed ones drop out.
   // NOTE: every entry here was current when the last pass began, and a face
   // that changes during a pass either goes or is made anew in that pass
