@@ -32,9 +32,13 @@ bool has_edge(const std::array<int, 3>& t, int a, int b) {
 bool edge_exists(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, int a, int b) {
   for (const auto& t : faces.tri)
     if (has_edge(t, a, b)) return true;
-  for (int f : w.vfaces[size_t(a)]) {
-    if (w.face_with_vertex_index(f, b) >= 0 && !in_platelet(p, f)) return true;
-  }
+  // NOTE: a face with both a and b is in both face lists; comparing the
+  // lists' ids reads no triangle (a's faces beyond the platelet were not
+  // read before and mostly missed the cache).
+  const FaceLists::Span of_b = w.vfaces[size_t(b)];
+  for (int f : w.vfaces[size_t(a)])
+    for (int g : of_b)
+      if (f == g && !in_platelet(p, f)) return true;
   return false;
 }
 
