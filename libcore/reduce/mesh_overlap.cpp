@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace isoform::reduce {
 namespace {
@@ -201,20 +202,42 @@ void group_by_cell(Entry* first, Entry* last, std::vector<Entry>& scratch) {
   std::copy(scratch.begin(), scratch.end(), first);
 }
 
+// NOTE: the counting sort runs in a few stretches of triangles side by
+// side, each with its own counts per bucket; a bucket then holds the first
+// stretch's entries, then the second's, and so on: the order of one pass over
+// all triangles.
 Buckets grid_entries(const std::vector<Box>& boxes, const Grid& g) {
   const std::vector<CellRange> ranges = cell_ranges(boxes, g);
   size_t n = 0;
   for (const CellRange& r : ranges) n += r.count();
   const BucketMap bucket = bucket_map(ranges, n);
+  const size_t stretches =
+      ranges.size() < 65536 ? 1 : size_t(std::clamp(tbb::this_task_arena::max_concurrency(), 1, 4));
+  const size_t per = (ranges.size() + stretches - 1) / stretches;
+  std::vector<std::vector<size_t>> fill(stretches, std::vector<size_t>(bucket.count, 0));
+  const auto each_stretch = [&](auto visit) {
+    tbb::parallel_for(size_t(0), stretches, [&](size_t s) {
+      for (size_t t = s * per; t < std::min(ranges.size(), (s + 1) * per); ++t)
+        for_cells(ranges[t], [&](uint64_t key, uint32_t first) { visit(fill[s], t, key, first); });
+    });
+  };
+  each_stretch([&](std::vector<size_t>& count, size_t, uint64_t key, uint32_t) { ++count[bucket(key)]; });
   Buckets out;
   out.dense = bucket.dense;
   out.start.assign(bucket.count + 1, 0);
-  for (const CellRange& r : ranges) for_cells(r, [&](uint64_t key, uint32_t) { ++out.start[bucket(key) + 1]; });
-  for (size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
-  std::vector<size_t> fill(out.start.begin(), out.start.end() - 1);
+  for (size_t b = 0; b < bucket.count; ++b) {
+    size_t at = out.start[b];
+    for (size_t s = 0; s < stretches; ++s) {
+      const size_t count = fill[s][b];
+      fill[s][b] = at;
+      at += count;
+    }
+    out.start[b + 1] = at;
+  }
   out.entries.resize(n);
-  for (size_t t = 0; t < ranges.size(); ++t)
-    for_cells(ranges[t], [&](uint64_t key, uint32_t first) { out.entries[fill[bucket(key)]++] = {key, int32_t(t), first}; });
+  each_stretch([&](std::vector<size_t>& next, size_t t, uint64_t key, uint32_t first) {
+    out.entries[next[bucket(key)]++] = {key, int32_t(t), first};
+  });
   return out;
 }
 
@@ -272,7 +295,7 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
       }
   };
   const size_t bucket_count = buckets.start.size() - 1;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, bucket_count, 1024), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, bucket_count, 64), [&](const tbb::blocked_range<size_t>& r) {
     BucketScratch& b = scratch.local();
     for (size_t k = r.begin(); k != r.end(); ++k) {
       Entry* first = buckets.entries.data() + buckets.start[k];

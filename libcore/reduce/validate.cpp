@@ -226,6 +226,8 @@ void validate_manifold(const Mesh& mesh, const std::string& what) { manifold_off
 
 void validate_no_overlap(const Mesh& mesh, const std::string& what) { check_overlaps(mesh, throw_first(what)); }
 
+void validate_indices(const Mesh& mesh, const std::string& what) { check_indices(mesh, what); }
+
 void validate_input(const Mesh& mesh, const std::string& what) {
   validate_manifold(mesh, what);
   validate_no_overlap(mesh, what);

@@ -32,8 +32,12 @@ void validate_input(const Mesh& mesh, const std::string& what);
 // The same in two steps: every check but the overlap one (after it the mesh
 // is a manifold, consistently oriented triangulation with finite points, so
 // work that is local to each vertex may start), then the overlap check.
-// validate_input is the first, then the second.
+// validate_input is the first, then the second. The overlap check needs
+// only validate_indices before it (it may run beside validate_manifold; on
+// a mesh that fails the latter its result means nothing).
 void validate_manifold(const Mesh& mesh, const std::string& what);
 void validate_no_overlap(const Mesh& mesh, const std::string& what);
+// Throws InvalidArgument "<what>: ..." for a triangle index that names no vertex.
+void validate_indices(const Mesh& mesh, const std::string& what);
 
 }  // namespace isoform::reduce
