@@ -53,7 +53,7 @@ Command add_reduce_command(CLI::App& parent) {
       "Removes the triangle of least weight (angle weight times the absolute curvature at its "
       "vertices) again and again, replacing it by one point fitted to its neighbourhood, until "
       "--keep of the triangles remain or --tolerance would be exceeded. Curvature is computed "
-      "first when the file has none. The mesh must be manifold, consistently oriented, with "
+      "first when the file has none (the cubic fit; run isoform curvature first for another). The mesh must be manifold, consistently oriented, with "
       "finite coordinates and not overlap itself (else the first offender is named), unless "
       "--manifold-parts. "
       "Example: isoform reduce skull.ply --keep 10% -o small.ply");

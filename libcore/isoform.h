@@ -813,7 +813,7 @@ typedef struct isoform_reduce_stats {
  * lightest triangle (angle weight times absolute curvature at its vertices)
  * that passes the tests is replaced by one point, until keep_fraction of the
  * triangles remain or a tolerance stops it. Curvature is computed first
- * (isoform_curvature's defaults) when the mesh has none. Keeps the Euler
+ * (isoform_curvature with ISOFORM_CURVATURE_CUBIC) when the mesh has none. Keeps the Euler
  * characteristic, genus and parts; recomputes neighbours, parts and stats;
  * drops colours and loose edges. A non-manifold or inconsistently oriented
  * mesh, NaN coordinates, a triangle using a vertex twice, or two triangles

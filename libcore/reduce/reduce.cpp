@@ -62,7 +62,13 @@ Mesh prepared_copy(const Mesh& mesh, const Progress& progress, bool* computed) {
   m.contour = mesh.contour;
   if (m.normals.size() != m.points.size()) estimate_normals(m);
   *computed = m.curvature.k1.size() != mesh.vertex_count();
-  if (*computed) compute_curvature(m, CurvatureOptions{}, progress);
+  // NOTE: the weights need |k1| + |k2| at every vertex (5.22), and the
+  // result carries the curvature: the cubic fit over the two-ring, half the
+  // time of `isoform curvature`'s quartic default over the three-ring, with
+  // the bench's graph errors the same and Table 5.1 as good (docs/reduce.md).
+  CurvatureOptions fit;
+  fit.method = CurvatureMethod::Cubic;
+  if (*computed) compute_curvature(m, fit, progress);
   return m;
 }
 

