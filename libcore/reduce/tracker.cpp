@@ -44,16 +44,20 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
   const size_t nv = w.pos.size(), nt = w.tri.size();
   original_.resize(nv);
   tbb::parallel_for(size_t(0), nv, [&](size_t v) { original_[v].x = w.pos[v]; });
-  original_tri_ = w.tri;
-  face_start_.assign(nv + 1, 0);
-  for (size_t v = 0; v < nv; ++v) face_start_[v + 1] = face_start_[v] + int(w.vfaces[v].size());
-  face_list_.resize(size_t(face_start_[nv]));
-  tbb::parallel_for(size_t(0), nv, [&](size_t v) {
-    std::copy(w.vfaces[v].begin(), w.vfaces[v].end(), face_list_.begin() + face_start_[v]);
-  });
+  // The original triangles around each original vertex: for the distances
+  // to the original surface (a finite tolerance, or a measurement).
+  if ((distance_ > 0 && std::isfinite(distance_)) || measure_) {
+    original_tri_ = w.tri;
+    face_start_.assign(nv + 1, 0);
+    for (size_t v = 0; v < nv; ++v) face_start_[v + 1] = face_start_[v] + int(w.vfaces[v].size());
+    face_list_.resize(size_t(face_start_[nv]));
+    tbb::parallel_for(size_t(0), nv, [&](size_t v) {
+      std::copy(w.vfaces[v].begin(), w.vfaces[v].end(), face_list_.begin() + face_start_[v]);
+    });
+  }
   head_.assign(nt, -1);
   next_.assign(nv, -1);
-  touched_.assign(nv, 0);
+  if (rms_ > 0) touched_.assign(nv, 0);
   for (size_t v = 0; v < nv; ++v) {
     if (w.vfaces[v].empty()) continue;
     const int f = w.vfaces[v].front();
