@@ -70,18 +70,26 @@ void project_faces(const std::vector<std::array<int, 3>>& tri, const Projection&
 }
 
 // The face x projects into (or nearest to), and its barycentric coordinates.
-// `hint` (a face index, or -1) is tried first: the projected faces do not
-// overlap, so a face holding x with every barycentric coordinate clear of
-// rounding is the one the full scan would choose.
+// The projected faces do not overlap, so a face holding x with every
+// barycentric coordinate clear of rounding is the one a scan for the
+// largest smallest coordinate would choose: `hint` (a face index, or -1) is
+// tried first, and the scan stops at such a face.
 inline int containing_face(const std::vector<ProjectedFace>& faces, const Eigen::Vector2d& x, double* l,
                            int hint = -1) {
+  constexpr double kClear = 1e-9;
   double best = -std::numeric_limits<double>::infinity(), tmp[3];
-  if (hint >= 0 && size_t(hint) < faces.size() && faces[size_t(hint)].inside(x(0), x(1), l) > 1e-9) return hint;
+  if (hint >= 0 && size_t(hint) < faces.size() && faces[size_t(hint)].inside(x(0), x(1), l) > kClear) return hint;
   int chosen = 0;
   l[0] = 1;
   l[1] = l[2] = 0;
   for (size_t i = 0; i < faces.size(); ++i) {
     const double s = faces[i].inside(x(0), x(1), tmp);
+    if (s > kClear) {
+      l[0] = tmp[0];
+      l[1] = tmp[1];
+      l[2] = tmp[2];
+      return int(i);
+    }
     if (s > best) {
       best = s;
       chosen = int(i);
