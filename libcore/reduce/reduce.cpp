@@ -51,26 +51,6 @@ void check_options(const ReduceOptions& o) {
     throw InvalidArgument("reduce: graph_rms_tolerance needs graph mode (a mesh z = f(x, y))");
 }
 
-// The mesh the reduction starts from: the input with normals and curvature.
-Mesh prepared_copy(const Mesh& mesh, const Progress& progress, bool* computed) {
-  Mesh m;
-  m.points = mesh.points;
-  m.precise_points = mesh.precise_points;
-  m.triangles = mesh.triangles;
-  m.normals = mesh.normals;
-  m.curvature = mesh.curvature;
-  m.contour = mesh.contour;
-  if (m.normals.size() != m.points.size()) estimate_normals(m);
-  *computed = m.curvature.k1.size() != mesh.vertex_count();
-  // NOTE: the weights need |k1| + |k2| at every vertex (5.22), and the
-  // result carries the curvature: the cubic fit over the two-ring, half the
-  // time of `isoform curvature`'s quartic default over the three-ring, with
-  // the bench's graph errors the same and Table 5.1 as good (docs/reduce.md).
-  CurvatureOptions fit;
-  fit.method = CurvatureMethod::Cubic;
-  if (*computed) compute_curvature(m, fit, progress);
-  return m;
-}
 
 // The self-overlap check (validate.h) as a task beside the whole reduction,
 // which works on a copy until it succeeds.
@@ -118,12 +98,37 @@ class OverlapCheck {
 // stops, and the check's error is reported instead.
 struct OverlapFound {};
 
-// The working mesh of an input that passed the manifold checks (validate.h):
-// the normals and curvature (prepared_copy) and the working structure.
-WorkMesh prepared_work_mesh(const Mesh& mesh, const Progress& progress, Mesh& work, bool* computed) {
-  work = prepared_copy(mesh, progress, computed);
+// The working mesh of an input that passed the manifold checks (validate.h),
+// with the input's normals and curvature, or computed ones; the stats of the
+// curvature into *curvature_stats.
+// NOTE: the input is read where it is, not copied first (60 MB for a
+// 1M-triangle mesh with double points): only a mesh without normals is.
+WorkMesh prepared_work_mesh(const Mesh& mesh, const Progress& progress, bool* computed,
+                            CurvatureStats* curvature_stats) {
+  const Mesh* source = &mesh;
+  Mesh with_normals;
+  if (mesh.normals.size() != mesh.points.size()) {
+    with_normals.points = mesh.points;
+    with_normals.precise_points = mesh.precise_points;
+    with_normals.triangles = mesh.triangles;
+    estimate_normals(with_normals);
+    source = &with_normals;
+  }
+  *computed = mesh.curvature.k1.size() != mesh.vertex_count();
+  // NOTE: the weights need |k1| + |k2| at every vertex (5.22), and the
+  // result carries the curvature: the cubic fit over the two-ring, half the
+  // time of `isoform curvature`'s quartic default over the three-ring, with
+  // the bench's graph errors the same and Table 5.1 as good (docs/reduce.md).
+  VertexCurvature fitted;
+  if (*computed) {
+    CurvatureOptions fit;
+    fit.method = CurvatureMethod::Cubic;
+    compute_curvature(*source, fit, progress, fitted, nullptr);
+  }
+  const VertexCurvature& curvature = *computed ? fitted : mesh.curvature;
+  *curvature_stats = curvature.stats;
   progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
-  return reduce::build_work_mesh(work);
+  return reduce::build_work_mesh(*source, curvature);
 }
 
 void count_refusal(Outcome o, ReduceRefusals& r) {
@@ -254,8 +259,8 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   // The manifold checks' error first, else the overlap check's, else any other.
   reduce::validate_indices(mesh, "reduce");
   OverlapCheck overlap(mesh);
-  Mesh work;
   WorkMesh w;
+  CurvatureStats curvature_stats;
   try {
     tbb::this_task_arena::isolate([&] { reduce::validate_manifold(mesh, "reduce"); });
   } catch (...) {
@@ -264,7 +269,7 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   }
   try {
     tbb::this_task_arena::isolate([&] {
-      w = prepared_work_mesh(mesh, progress, work, &stats.curvature_computed);
+      w = prepared_work_mesh(mesh, progress, &stats.curvature_computed, &curvature_stats);
       const long long target = (long long)std::ceil(options.keep_fraction * double(mesh.triangle_count()) - 1e-9);
       run_passes(w, options, target, progress, overlap, stats);
     });
@@ -273,8 +278,8 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
     throw;
   }
   overlap.finish();
-  reduce::write_back(w, work.precise_points.size() == work.points.size(), work);
-  mesh = std::move(work);
+  const bool precise = mesh.precise_points.size() == mesh.points.size();
+  mesh = reduce::write_back(w, precise, curvature_stats, mesh.contour);
   stats.triangles_after = (long long)mesh.triangle_count();
   stats.vertices_after = (long long)mesh.vertex_count();
   return stats;

@@ -1,9 +1,11 @@
 // Building the working structure of the reduction and writing its result back.
 #include "work_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "../topology.h"
 #include "queue.h"
@@ -27,9 +29,26 @@ bool on_boundary(const WorkMesh& w, int v) {
   return false;
 }
 
+// Each vertex's faces in ascending order, as one scan of the triangles
+// would list them.
+// NOTE: in up to four stretches of vertices side by side, each scanning all
+// triangles for its own vertices: a single scan was a serial stretch of the
+// preparation.
+void fill_face_lists(WorkMesh& w) {
+  const size_t nv = w.pos.size(), nt = w.tri.size();
+  w.vfaces.reset(nv);
+  const size_t stretches = nt < 65536 ? 1 : size_t(std::clamp(tbb::this_task_arena::max_concurrency(), 1, 4));
+  tbb::parallel_for(size_t(0), stretches, [&](size_t s) {
+    const size_t first = nv * s / stretches, last = nv * (s + 1) / stretches;
+    for (size_t t = 0; t < nt; ++t)
+      for (int v : w.tri[t])
+        if (size_t(v) >= first && size_t(v) < last) w.vfaces.push_back(size_t(v), int(t));
+  });
+}
+
 }  // namespace
 
-WorkMesh build_work_mesh(const Mesh& mesh) {
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c) {
   WorkMesh w;
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   const bool precise = mesh.precise_points.size() == 3 * nv;
@@ -46,13 +65,10 @@ WorkMesh build_work_mesh(const Mesh& mesh) {
   w.face_stamp.assign(nt, 0);
   w.face_pass.assign(nt, 0);
   w.live_faces = (long long)nt;
-  w.vfaces.reset(nv);
-  for (size_t t = 0; t < nt; ++t)
-    for (int v : w.tri[t]) w.vfaces.push_back(size_t(v), int(t));
+  fill_face_lists(w);
   w.vertex_alive.assign(nv, 1);
   w.boundary.assign(nv, 0);
   tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = on_boundary(w, int(v)) ? 1 : 0; });
-  const VertexCurvature& c = mesh.curvature;
   w.absolute.resize(nv);
   for (size_t v = 0; v < nv; ++v) w.absolute[v] = c.absolute[v];
   w.k1 = c.k1;
@@ -65,7 +81,7 @@ WorkMesh build_work_mesh(const Mesh& mesh) {
   return w;
 }
 
-void write_back(const WorkMesh& w, bool precise, Mesh& mesh) {
+Mesh write_back(const WorkMesh& w, bool precise, const CurvatureStats& curvature_stats, const ContourStats& contour) {
   const size_t nv = w.pos.size();
   std::vector<int32_t> remap(nv, -1);
   int32_t next = 0;
@@ -101,11 +117,11 @@ void write_back(const WorkMesh& w, bool precise, Mesh& mesh) {
     if (!w.face_alive[t]) continue;
     for (int v : w.tri[t]) out.triangles.push_back(remap[size_t(v)]);
   }
-  c.stats = mesh.curvature.stats;
+  c.stats = curvature_stats;
   c.stats.vertices = next;
-  out.contour = mesh.contour;
+  out.contour = contour;
   compute_topology(out);
-  mesh = std::move(out);
+  return out;
 }
 
 }  // namespace isoform::reduce

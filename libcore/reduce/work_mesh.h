@@ -44,12 +44,15 @@ struct WorkMesh {
   }
 };
 
-// Builds the structure from a validated mesh that carries curvature and
-// normals (precise points are used when present).
-WorkMesh build_work_mesh(const Mesh& mesh);
+// Builds the structure from a validated mesh that carries normals, with the
+// curvature of its vertices (precise points are used when present).
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& curvature);
 
-// Writes the surviving vertices (in their order) and faces back into mesh,
-// with normals and curvature; recomputes neighbours, parts and stats.
-void write_back(const WorkMesh& work, bool precise, Mesh& mesh);
+// The mesh of the surviving vertices (in their order) and faces, with
+// normals, curvature (its stats: `curvature_stats` for the new count of
+// vertices) and precise points when `precise`; neighbours, parts and stats
+// computed.
+Mesh write_back(const WorkMesh& work, bool precise, const CurvatureStats& curvature_stats,
+                const ContourStats& contour);
 
 }  // namespace isoform::reduce
