@@ -10,7 +10,9 @@
 
 #include <tbb/global_control.h>
 
+#include "libcore/curvature/surface_curvature.h"
 #include "libcore/errors.h"
+#include "libcore/mesh_normals.h"
 #include "libcore/reduce/reduce.h"
 #include "libcore/reduce/tracker.h"
 #include "libcore/topology.h"
@@ -357,6 +359,33 @@ TEST(Reduce, GraphRmsToleranceStopsBeforeIt) {
   EXPECT_LE(rms, 0.001);
   EXPECT_GT(rms, 0.0009);
   EXPECT_NEAR(rms, s.graph_rms, 1e-9);
+}
+
+// The curvature the weights need: the input's when it carries one, else the
+// cubic fit over the two-ring with the input's normals, else with normals
+// estimated first. A torus with neither, and the same torus carrying those
+// normals and that fit, give the same mesh to the bit; a fit of another
+// method in the input changes the order of the removals.
+TEST(Reduce, InputCurvatureIsUsedAndTheDefaultIsTheCubicFit) {
+  Mesh bare = figure510_torus(80, 40);
+  Mesh fitted = bare;
+  estimate_normals(fitted);
+  CurvatureOptions cubic;
+  cubic.method = CurvatureMethod::Cubic;
+  compute_curvature(fitted, cubic, Progress(nullptr));
+  Mesh quartic = fitted;
+  CurvatureOptions other;
+  other.method = CurvatureMethod::Quartic;
+  compute_curvature(quartic, other, Progress(nullptr));
+  const ReduceStats sb = reduce(bare, 0.1), sf = reduce(fitted, 0.1), sq = reduce(quartic, 0.1);
+  EXPECT_TRUE(sb.curvature_computed);
+  EXPECT_FALSE(sf.curvature_computed);
+  EXPECT_FALSE(sq.curvature_computed);
+  EXPECT_EQ(bare.triangles, fitted.triangles);
+  EXPECT_EQ(bare.precise_points, fitted.precise_points);
+  EXPECT_EQ(bare.curvature.k1, fitted.curvature.k1);
+  EXPECT_NE(bare.precise_points, quartic.precise_points);
+  expect_closed_manifold(bare);
 }
 
 TEST(Reduce, CancelLeavesTheMeshUnchanged) {
