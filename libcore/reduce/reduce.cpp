@@ -173,6 +173,17 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   // accepted share no platelet vertex (the second read none that the first
   // changed, speculate.h), so their commits write disjoint data. An entry
   // whose reads an accepted removal changed waits for the commits first.
+  // NOTE: where the queue's order visits neighbours one after another (ties
+  // of the weight, as on flat regions, are taken in face order, and
+  // neighbouring faces have near ids), most removals computed ahead read
+  // what an earlier one of their batch changed and are computed again, one
+  // by one: the work ahead is lost. A batch in which a quarter of the
+  // entries met an earlier removal so is followed by one computed one
+  // removal at a time, each against the mesh with every earlier removal
+  // made, which also counts how many would have met one; fewer, and the
+  // next batch is computed ahead again. Either way each removal is computed
+  // against the mesh it would meet one at a time: the same result.
+  bool ahead_pays = true;
   std::vector<const reduce::Proposal*> pending;
   while (w.live_faces > target) {
     const int pass = ++stats.passes;
@@ -189,7 +200,12 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
     const std::vector<reduce::QueueEntry>& order = queue.next_pass(w, pass);
     for (size_t begin = 0; begin < order.size() && !stop && !reached; begin += kBatch) {
       const size_t end = std::min(order.size(), begin + kBatch);
-      ahead.propose(remover, w, order, begin, end, pass);
+      const bool speculate = ahead_pays;
+      if (speculate)
+        ahead.propose(remover, w, order, begin, end, pass);
+      else
+        ahead.begin_serial(w, order, begin, end, pass);
+      size_t met = 0;  // entries that read what an earlier removal of the batch changed
       for (size_t i = begin; i < end; ++i) {
         ahead.prefetch(w, i + kApplyAhead);
         const reduce::QueueEntry& e = order[i];
@@ -199,18 +215,28 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         }
         const size_t f = size_t(e.face);
         if (!ahead.was_current(i)) continue;
-        if (ahead.read_changed(i)) commit_pending();
-        if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) continue;
+        if (ahead.read_changed(i)) {
+          ++met;
+          commit_pending();
+        }
+        if (!w.face_alive[f] || w.face_stamp[f] != e.stamp || w.face_pass[f] == pass) {
+          met += speculate ? 0 : 1;  // an earlier removal of the batch changed its face
+          continue;
+        }
         if ((++tries & 1023) == 0) {
           if (progress.cancelled()) throw Cancelled("reduce: cancelled");
           if (overlap.failed()) throw OverlapFound{};
           progress.fraction(float(double(start - w.live_faces) / double(std::max(1LL, start - target))));
         }
         const reduce::Proposal& proposal = ahead.current(remover, i);
+        if (!speculate && ahead.read_changed(i)) ++met;
         const Outcome o = remover.accept(proposal);
         if (o == Outcome::Removed) {
           ahead.applied(proposal);
-          pending.push_back(&proposal);
+          if (speculate)
+            pending.push_back(&proposal);
+          else
+            remover.commit(proposal, pass);
           ++removed;
           ++stats.removals;
           continue;
@@ -223,6 +249,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         }
       }
       commit_pending();
+      ahead_pays = 4 * met < end - begin;
     }
     if (stop) {
       stats.stop_reason = 3;

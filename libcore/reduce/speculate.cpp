@@ -52,14 +52,7 @@ bool is_current(const WorkMesh& w, const QueueEntry& e, int pass) {
 
 void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::vector<QueueEntry>& order,
                           size_t begin, size_t end, int pass) {
-  ++batch_;
-  begin_ = begin;
-  order_ = &order;
-  if (slots_.size() < end - begin) slots_.resize(end - begin);
-  computed_.assign(end - begin, 0);
-  entries_.clear();
-  for (size_t i = begin; i < end; ++i)
-    if (is_current(w, order[i], pass)) entries_.push_back(i);
+  begin_serial(w, order, begin, end, pass);
   // NOTE: one removal per task (simple partitioner, grain 1): a thread
   // that holds a stolen half of the batch and loses its core would keep
   // the other waiting for all of it; so each thread can take back the
@@ -77,7 +70,24 @@ void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::
       tbb::simple_partitioner());
 }
 
+void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin, size_t end,
+                               int pass) {
+  ++batch_;
+  begin_ = begin;
+  order_ = &order;
+  if (slots_.size() < end - begin) slots_.resize(end - begin);
+  computed_.assign(end - begin, 0);
+  current_.assign(end - begin, 0);
+  entries_.clear();
+  for (size_t i = begin; i < end; ++i)
+    if (is_current(w, order[i], pass)) {
+      entries_.push_back(i);
+      current_[i - begin] = 1;
+    }
+}
+
 bool Speculation::read_changed(size_t i) const {
+  if (!computed_[i - begin_]) return false;
   for (int v : slots_[i - begin_].reads)
     if (changed_[size_t(v)] == batch_) return true;
   return false;

@@ -33,11 +33,15 @@ class Speculation {
   // current for `pass` now.
   void propose(const Remover& remover, const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin,
                size_t end, int pass);
+  // Begins the batch order[begin, end) without computing anything ahead:
+  // each removal is then computed when current() asks for it.
+  void begin_serial(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin, size_t end, int pass);
   // Was entry i current when the batch began? (One that was not is not now:
   // stamps only grow, dead faces stay dead, a face made in a pass keeps it.)
-  bool was_current(size_t i) const { return computed_[i - begin_] != 0; }
+  bool was_current(size_t i) const { return current_[i - begin_] != 0; }
   // Did a removal applied in this batch change what entry i's removal read?
-  // (When not, neither did it change entry i's face.)
+  // (When not, neither did it change entry i's face.) False for an entry
+  // not computed yet.
   bool read_changed(size_t i) const;
   // The removal of entry i of the batch as it would be computed now: the
   // one computed ahead when nothing it read has changed since, else
@@ -52,6 +56,7 @@ class Speculation {
  private:
   std::vector<Proposal> slots_;
   std::vector<uint8_t> computed_;   // per slot
+  std::vector<uint8_t> current_;    // per slot: current when the batch began
   std::vector<size_t> entries_;     // the batch's current entries
   std::vector<uint32_t> changed_;   // per vertex: the batch that last changed it
   uint32_t batch_ = 0;
