@@ -103,8 +103,8 @@ struct OverlapFound {};
 // curvature into *curvature_stats.
 // NOTE: the input is read where it is, not copied first (60 MB for a
 // 1M-triangle mesh with double points): only a mesh without normals is.
-WorkMesh prepared_work_mesh(const Mesh& mesh, const Progress& progress, bool* computed,
-                            CurvatureStats* curvature_stats) {
+WorkMesh prepared_work_mesh(const Mesh& mesh, const reduce::VertexStars& stars, const Progress& progress,
+                            bool* computed, CurvatureStats* curvature_stats) {
   const Mesh* source = &mesh;
   Mesh with_normals;
   if (mesh.normals.size() != mesh.points.size()) {
@@ -128,7 +128,7 @@ WorkMesh prepared_work_mesh(const Mesh& mesh, const Progress& progress, bool* co
   const VertexCurvature& curvature = *computed ? fitted : mesh.curvature;
   *curvature_stats = curvature.stats;
   progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
-  return reduce::build_work_mesh(*source, curvature);
+  return reduce::build_work_mesh(*source, curvature, stars);
 }
 
 void count_refusal(Outcome o, ReduceRefusals& r) {
@@ -286,17 +286,21 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   // The manifold checks' error first, else the overlap check's, else any other.
   reduce::validate_indices(mesh, "reduce");
   OverlapCheck overlap(mesh);
+  reduce::VertexStars stars;
   WorkMesh w;
   CurvatureStats curvature_stats;
   try {
-    tbb::this_task_arena::isolate([&] { reduce::validate_manifold(mesh, "reduce"); });
+    tbb::this_task_arena::isolate([&] {
+      stars = reduce::vertex_stars(mesh);
+      reduce::validate_manifold(mesh, stars, "reduce");
+    });
   } catch (...) {
     overlap.wait();  // (the check reads the mesh)
     throw;
   }
   try {
     tbb::this_task_arena::isolate([&] {
-      w = prepared_work_mesh(mesh, progress, &stats.curvature_computed, &curvature_stats);
+      w = prepared_work_mesh(mesh, stars, progress, &stats.curvature_computed, &curvature_stats);
       const long long target = (long long)std::ceil(options.keep_fraction * double(mesh.triangle_count()) - 1e-9);
       run_passes(w, options, target, progress, overlap, stats);
     });

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 
@@ -163,19 +164,12 @@ bool one_fan(const Mesh& mesh, const int32_t* faces, size_t count, int32_t v, st
 }
 
 // The vertices are checked in parallel, the offences reported in order.
-bool check_vertex_fans(const Mesh& mesh, const Sink& sink) {
-  const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
-  std::vector<int32_t> start(nv + 1, 0), faces(3 * nt);
-  for (int32_t v : mesh.triangles) ++start[size_t(v) + 1];
-  for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<int32_t> fill(start.begin(), start.end() - 1);
-  for (size_t t = 0; t < nt; ++t)
-    for (int k = 0; k < 3; ++k) faces[size_t(fill[size_t(mesh.triangles[3 * t + k])]++)] = int32_t(t);
+bool check_vertex_fans(const Mesh& mesh, const VertexStars& stars, const Sink& sink) {
+  const size_t nv = mesh.vertex_count();
   std::vector<uint8_t> bad(nv, 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<std::array<int32_t, 2>> link;
-    for (size_t v = r.begin(); v != r.end(); ++v)
-      bad[v] = !one_fan(mesh, faces.data() + start[v], size_t(start[v + 1] - start[v]), int32_t(v), link);
+    for (size_t v = r.begin(); v != r.end(); ++v) bad[v] = !one_fan(mesh, stars.begin(v), stars.size(v), int32_t(v), link);
   });
   for (size_t v = 0; v < nv; ++v) {
     if (!bad[v]) continue;
@@ -185,6 +179,32 @@ bool check_vertex_fans(const Mesh& mesh, const Sink& sink) {
     if (!sink(o)) return false;
   }
   return true;
+}
+
+// The edge and fan checks at once, from each vertex's star: its edges go
+// to the corners after it and come from the corners before it, so every
+// edge is in at most two triangles, in opposite directions when in two,
+// exactly when around every vertex the corners after it are distinct and
+// so are those before it (a triangle that uses a vertex twice lists it
+// twice and fails too). True when every vertex passes; check_edges and
+// check_vertex_fans then find nothing, and are run only to name the
+// offenders otherwise.
+// NOTE: check_edges alone builds and sorts a table of all edges; this reads
+// the star table, which the working mesh's face lists are then filled from.
+bool stars_pass(const Mesh& mesh, const VertexStars& stars) {
+  const size_t nv = mesh.vertex_count();
+  std::atomic<bool> pass{true};
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<std::array<int32_t, 2>> link;
+    for (size_t v = r.begin(); v != r.end() && pass.load(std::memory_order_relaxed); ++v) {
+      bool fine = one_fan(mesh, stars.begin(v), stars.size(v), int32_t(v), link);
+      for (size_t i = 0; i < link.size() && fine; ++i)
+        for (size_t j = i + 1; j < link.size() && fine; ++j)
+          fine = link[i][0] != link[j][0] && link[i][1] != link[j][1];
+      if (!fine) pass.store(false, std::memory_order_relaxed);
+    }
+  });
+  return pass.load();
 }
 
 std::string number(double x) {
@@ -205,11 +225,11 @@ bool check_overlaps(const Mesh& mesh, const Sink& sink) {
   return true;
 }
 
-// Every check but the overlap one; false when sink asked to stop.
-bool manifold_offences(const Mesh& mesh, const std::string& what, const Sink& sink) {
-  check_indices(mesh, what);
-  return check_points(mesh, sink) && check_triangles(mesh, sink) && check_edges(mesh, sink) &&
-         check_vertex_fans(mesh, sink);
+// Every check but the overlap one, after check_indices; false when sink
+// asked to stop.
+bool manifold_offences(const Mesh& mesh, const VertexStars& stars, const Sink& sink) {
+  return check_points(mesh, sink) && check_triangles(mesh, sink) &&
+         (stars_pass(mesh, stars) || (check_edges(mesh, sink) && check_vertex_fans(mesh, stars, sink)));
 }
 
 Sink throw_first(const std::string& what) {
@@ -219,17 +239,21 @@ Sink throw_first(const std::string& what) {
 }  // namespace
 
 void find_offences(const Mesh& mesh, const std::string& what, const Sink& sink) {
-  if (manifold_offences(mesh, what, sink)) check_overlaps(mesh, sink);
+  check_indices(mesh, what);
+  if (manifold_offences(mesh, vertex_stars(mesh), sink)) check_overlaps(mesh, sink);
 }
 
-void validate_manifold(const Mesh& mesh, const std::string& what) { manifold_offences(mesh, what, throw_first(what)); }
+void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what) {
+  manifold_offences(mesh, stars, throw_first(what));
+}
 
 void validate_no_overlap(const Mesh& mesh, const std::string& what) { check_overlaps(mesh, throw_first(what)); }
 
 void validate_indices(const Mesh& mesh, const std::string& what) { check_indices(mesh, what); }
 
 void validate_input(const Mesh& mesh, const std::string& what) {
-  validate_manifold(mesh, what);
+  check_indices(mesh, what);
+  validate_manifold(mesh, vertex_stars(mesh), what);
   validate_no_overlap(mesh, what);
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../mesh.h"
+#include "vertex_stars.h"
 
 namespace isoform::reduce {
 
@@ -29,13 +30,14 @@ void find_offences(const Mesh& mesh, const std::string& what, const std::functio
 // Throws InvalidArgument "<what>: <problem>" for the first violation.
 void validate_input(const Mesh& mesh, const std::string& what);
 
-// The same in two steps: every check but the overlap one (after it the mesh
-// is a manifold, consistently oriented triangulation with finite points, so
-// work that is local to each vertex may start), then the overlap check.
-// validate_input is the first, then the second. The overlap check needs
-// only validate_indices before it (it may run beside validate_manifold; on
-// a mesh that fails the latter its result means nothing).
-void validate_manifold(const Mesh& mesh, const std::string& what);
+// The same in steps: validate_indices, then every check but the overlap one
+// (after it the mesh is a manifold, consistently oriented triangulation with
+// finite points, so work that is local to each vertex may start), reading
+// the star table (vertex_stars.h) that the caller may use again, then the
+// overlap check. validate_input is these three. The overlap check needs
+// only validate_indices before it (it may run beside validate_manifold; on a
+// mesh that fails the latter its result means nothing).
+void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what);
 void validate_no_overlap(const Mesh& mesh, const std::string& what);
 // Throws InvalidArgument "<what>: ..." for a triangle index that names no vertex.
 void validate_indices(const Mesh& mesh, const std::string& what);

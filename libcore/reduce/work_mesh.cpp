@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "../topology.h"
 #include "queue.h"
@@ -29,26 +29,19 @@ bool on_boundary(const WorkMesh& w, int v) {
   return false;
 }
 
-// Each vertex's faces in ascending order, as one scan of the triangles
-// would list them.
-// NOTE: in up to four stretches of vertices side by side, each scanning all
-// triangles for its own vertices: a single scan was a serial stretch of the
-// preparation.
-void fill_face_lists(WorkMesh& w) {
-  const size_t nv = w.pos.size(), nt = w.tri.size();
+// Each vertex's faces in ascending order, from the star table.
+void fill_face_lists(WorkMesh& w, const VertexStars& stars) {
+  const size_t nv = w.pos.size();
   w.vfaces.reset(nv);
-  const size_t stretches = nt < 65536 ? 1 : size_t(std::clamp(tbb::this_task_arena::max_concurrency(), 1, 4));
-  tbb::parallel_for(size_t(0), stretches, [&](size_t s) {
-    const size_t first = nv * s / stretches, last = nv * (s + 1) / stretches;
-    for (size_t t = 0; t < nt; ++t)
-      for (int v : w.tri[t])
-        if (size_t(v) >= first && size_t(v) < last) w.vfaces.push_back(size_t(v), int(t));
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v)
+      for (const int32_t* f = stars.begin(v); f != stars.end(v); ++f) w.vfaces.push_back(v, int(*f));
   });
 }
 
 }  // namespace
 
-WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c) {
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const VertexStars& stars) {
   WorkMesh w;
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   const bool precise = mesh.precise_points.size() == 3 * nv;
@@ -65,7 +58,7 @@ WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c) {
   w.face_stamp.assign(nt, 0);
   w.face_pass.assign(nt, 0);
   w.live_faces = (long long)nt;
-  fill_face_lists(w);
+  fill_face_lists(w, stars);
   w.vertex_alive.assign(nv, 1);
   w.boundary.assign(nv, 0);
   tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = on_boundary(w, int(v)) ? 1 : 0; });

@@ -19,6 +19,7 @@
 
 #include "../mesh.h"
 #include "face_lists.h"
+#include "vertex_stars.h"
 
 namespace isoform::reduce {
 
@@ -45,8 +46,9 @@ struct WorkMesh {
 };
 
 // Builds the structure from a validated mesh that carries normals, with the
-// curvature of its vertices (precise points are used when present).
-WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& curvature);
+// curvature of its vertices and its star table (vertex_stars.h); precise
+// points are used when present.
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& curvature, const VertexStars& stars);
 
 // The mesh of the surviving vertices (in their order) and faces, with
 // normals, curvature (its stats: `curvature_stats` for the new count of
