@@ -14,13 +14,12 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <optional>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <tuple>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -151,8 +150,6 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
 constexpr size_t kBatch = 128;
 // How far ahead of the removal being applied its successors' data is asked for.
 constexpr size_t kApplyAhead = 3;
-// Accepted removals committed per task.
-constexpr size_t kCommitGrain = 4;
 
 // The passes of Remark 5.9 until the target count, a tolerance stop, or a
 // pass that removes nothing (Remark 5.11).
@@ -160,7 +157,10 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
                 const OverlapCheck& overlap, ReduceStats& stats) {
   reduce::Remover remover(w, options);
   reduce::PassQueue queue;
-  reduce::Speculation ahead(w.pos.size());
+  // (Both stopped before the measurement at the end, which is parallel.)
+  std::optional<reduce::BatchCrew> crew(std::in_place);
+  std::optional<reduce::Speculation> speculation(std::in_place, w.pos.size(), *crew);
+  reduce::Speculation& ahead = *speculation;
   // Beyond the seed (graph mode): a removal that would take one of its knots
   // past 4 times the RMS error of the knots moved so far waits (docs/reduce.md).
   if (options.graph) remover.tracker().set_guard(4.0);
@@ -189,15 +189,18 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
     const int pass = ++stats.passes;
     long long removed = 0, deferred = 0;
     bool stop = false, reached = false;
+    // (The removals computed ahead are all there first: they read the mesh.)
     const auto commit_pending = [&] {
+      ahead.settle();
       if (pending.empty()) return;
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, pending.size(), kCommitGrain),
-                        [&](const tbb::blocked_range<size_t>& r) {
-                          for (size_t k = r.begin(); k != r.end(); ++k) remover.commit(*pending[k], pass);
-                        });
+      crew->run(pending.size(), [&](size_t k) { remover.commit(*pending[k], pass); });
       pending.clear();
     };
-    const std::vector<reduce::QueueEntry>& order = queue.next_pass(w, pass);
+    // (Isolated: waiting for its parallel work, this thread takes none of
+    // the crew's helpers.)
+    const std::vector<reduce::QueueEntry>* pass_order = nullptr;
+    tbb::this_task_arena::isolate([&] { pass_order = &queue.next_pass(w, pass); });
+    const std::vector<reduce::QueueEntry>& order = *pass_order;
     for (size_t begin = 0; begin < order.size() && !stop && !reached; begin += kBatch) {
       const size_t end = std::min(order.size(), begin + kBatch);
       const bool speculate = ahead_pays;
@@ -264,6 +267,8 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
       break;
     }
   }
+  speculation.reset();
+  crew.reset();
   stats.swaps = remover.swaps();
   stats.vertex_points = remover.vertex_points();
   remover.tracker().measure_result(w);

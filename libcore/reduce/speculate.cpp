@@ -1,10 +1,6 @@
 // The removals of a pass computed ahead (see speculate.h).
 #include "speculate.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-
 #include "prefetch.h"
 
 namespace isoform::reduce {
@@ -53,21 +49,19 @@ bool is_current(const WorkMesh& w, const QueueEntry& e, int pass) {
 void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::vector<QueueEntry>& order,
                           size_t begin, size_t end, int pass) {
   begin_serial(w, order, begin, end, pass);
-  // NOTE: one removal per task (simple partitioner, grain 1): a thread
-  // that holds a stolen half of the batch and loses its core would keep
-  // the other waiting for all of it; so each thread can take back the
-  // other's untouched removals.
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, entries_.size(), 1),
-      [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k != r.end(); ++k) {
-          const size_t i = entries_[k];
-          prefetch_ahead(w, order, i);
-          remover.propose(order[i].face, slots_[i - begin]);
-          computed_[i - begin] = 1;
-        }
-      },
-      tbb::simple_partitioner());
+  ahead_ = true;
+  // NOTE: one removal at a time to each thread: a thread that loses its
+  // core holds the others up for one removal, not for a share of the batch.
+  // The helpers may still run it after this returns: it is a member.
+  compute_ = {this, &remover, &w};
+  crew_.start(entries_.size(), compute_);
+}
+
+void Speculation::ComputeAhead::operator()(size_t k) const {
+  const size_t i = ahead->entries_[k];
+  prefetch_ahead(*w, *ahead->order_, i);
+  remover->propose((*ahead->order_)[i].face, ahead->slots_[i - ahead->begin_]);
+  ahead->computed_[i - ahead->begin_].store(1, std::memory_order_release);
 }
 
 void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin, size_t end,
@@ -75,9 +69,15 @@ void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>&
   ++batch_;
   begin_ = begin;
   order_ = &order;
-  if (slots_.size() < end - begin) slots_.resize(end - begin);
-  computed_.assign(end - begin, 0);
-  current_.assign(end - begin, 0);
+  ahead_ = false;
+  const size_t n = end - begin;
+  if (slots_.size() < n) slots_.resize(n);
+  if (capacity_ < n) {
+    computed_.reset(new std::atomic<uint8_t>[n]);
+    capacity_ = n;
+  }
+  for (size_t k = 0; k < n; ++k) computed_[k].store(0, std::memory_order_relaxed);
+  current_.assign(n, 0);
   entries_.clear();
   for (size_t i = begin; i < end; ++i)
     if (is_current(w, order[i], pass)) {
@@ -86,8 +86,20 @@ void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>&
     }
 }
 
+void Speculation::wait_for(size_t i) const {
+  if (!ahead_ || !current_[i - begin_]) return;
+  while (!computed_[i - begin_].load(std::memory_order_acquire)) {
+    if (crew_.failed()) {
+      crew_.finish();  // throws what the computation threw
+      return;
+    }
+    BatchCrew::pause();
+  }
+}
+
 bool Speculation::read_changed(size_t i) const {
-  if (!computed_[i - begin_]) return false;
+  wait_for(i);
+  if (!computed_[i - begin_].load(std::memory_order_acquire)) return false;
   for (int v : slots_[i - begin_].reads)
     if (changed_[size_t(v)] == batch_) return true;
   return false;
@@ -95,9 +107,9 @@ bool Speculation::read_changed(size_t i) const {
 
 const Proposal& Speculation::current(const Remover& remover, size_t i) {
   Proposal& p = slots_[i - begin_];
-  if (!computed_[i - begin_] || read_changed(i)) {
+  if (!computed_[i - begin_].load(std::memory_order_acquire) || read_changed(i)) {
     remover.propose((*order_)[i].face, p);
-    computed_[i - begin_] = 1;
+    computed_[i - begin_].store(1, std::memory_order_relaxed);
   }
   return p;
 }
@@ -105,7 +117,7 @@ const Proposal& Speculation::current(const Remover& remover, size_t i) {
 // NOTE: a batch's removals were computed a while ago, or on the other core,
 // so their faces and face lists are cold again when their turn comes.
 void Speculation::prefetch(const WorkMesh& w, size_t i) const {
-  if (i < begin_ || i - begin_ >= computed_.size() || !computed_[i - begin_]) return;
+  if (i < begin_ || i - begin_ >= current_.size() || !computed_[i - begin_].load(std::memory_order_acquire)) return;
   const Proposal& p = slots_[i - begin_];
   for (int f : p.platelet.faces) {
     reduce::prefetch(&w.tri[size_t(f)]);

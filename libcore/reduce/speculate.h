@@ -18,9 +18,12 @@
 // target count) is decided when the removal is applied (Remover::apply).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "batch_crew.h"
 #include "queue.h"
 #include "removal.h"
 
@@ -28,11 +31,21 @@ namespace isoform::reduce {
 
 class Speculation {
  public:
-  explicit Speculation(size_t vertices) : changed_(vertices, 0) {}
-  // Computes, in parallel, the removals of order[begin, end) whose faces are
-  // current for `pass` now.
+  // The removals computed ahead run on `crew` (batch_crew.h).
+  Speculation(size_t vertices, BatchCrew& crew) : changed_(vertices, 0), crew_(crew) {}
+  Speculation(const Speculation&) = delete;
+  Speculation& operator=(const Speculation&) = delete;
+  ~Speculation() { crew_.settle(); }
+  // Starts computing, in parallel, the removals of order[begin, end) whose
+  // faces are current for `pass` now, and returns when this thread finds
+  // none left to start: the others may still be computing theirs, and the
+  // methods below wait for an entry's removal where they need it. Nothing
+  // may change the mesh before settle().
   void propose(const Remover& remover, const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin,
                size_t end, int pass);
+  // Waits until every removal of the batch is computed; rethrows what a
+  // computation threw.
+  void settle() { crew_.finish(); }
   // Begins the batch order[begin, end) without computing anything ahead:
   // each removal is then computed when current() asks for it.
   void begin_serial(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin, size_t end, int pass);
@@ -54,14 +67,29 @@ class Speculation {
   void applied(const Proposal& p);
 
  private:
+  // Waits until entry i's removal, computed ahead, is there.
+  void wait_for(size_t i) const;
+
+  // Computes the k-th current entry's removal (a crew item).
+  struct ComputeAhead {
+    Speculation* ahead = nullptr;
+    const Remover* remover = nullptr;
+    const WorkMesh* w = nullptr;
+    void operator()(size_t k) const;
+  };
+  ComputeAhead compute_;
+
   std::vector<Proposal> slots_;
-  std::vector<uint8_t> computed_;   // per slot
+  std::unique_ptr<std::atomic<uint8_t>[]> computed_;  // per slot
+  size_t capacity_ = 0;             // of computed_
+  bool ahead_ = false;              // the batch's removals are computed ahead
   std::vector<uint8_t> current_;    // per slot: current when the batch began
   std::vector<size_t> entries_;     // the batch's current entries
   std::vector<uint32_t> changed_;   // per vertex: the batch that last changed it
   uint32_t batch_ = 0;
   size_t begin_ = 0;
   const std::vector<QueueEntry>* order_ = nullptr;
+  BatchCrew& crew_;
 };
 
 }  // namespace isoform::reduce
