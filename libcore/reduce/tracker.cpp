@@ -89,12 +89,22 @@ double height_above(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Ei
 
 bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3d& point, const LocalFaces& faces,
                       TrackerPending& out) const {
-  out.vertex.clear();
   out.face.clear();
   out.err2.clear();
   out.delta.clear();
   out.largest_err2 = out.largest_distance = 0;
   out.fresh = 0;
+  // Only a finite tolerance is checked per removal; a measurement without
+  // one is made on the result (measure_result).
+  const bool distances = distance_ > 0 && std::isfinite(distance_);
+  // Without a bound or a measurement the faces refine() chose are all that
+  // is needed, and it listed the vertices in the order of the walk below.
+  if (out.assigned_valid && !(rms_ > 0) && !distances) {
+    out.face.assign(out.assigned.begin(), out.assigned.end());
+    out.assigned_valid = false;
+    return true;
+  }
+  out.vertex.clear();
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
   // The few original vertices nearest to the new point, whose triangles
   // bound its distance to the original surface.
@@ -102,9 +112,6 @@ bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3
   int near_vertex[kNear] = {-1, -1, -1, -1};
   double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
   const bool reuse = out.assigned_valid;
-  // Only a finite tolerance is checked per removal; a measurement without
-  // one is made on the result (measure_result).
-  const bool distances = distance_ > 0 && std::isfinite(distance_);
   out.assigned_valid = false;
   size_t index = 0;
   for (int f : p.faces)

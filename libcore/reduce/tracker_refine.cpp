@@ -60,6 +60,7 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
     if (fn.length > 0) fn.n = nn / fn.length;
   }
   out.assigned.clear();
+  out.vertex.clear();
   out.assigned_valid = true;
   for (int f : p.faces)
     for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
@@ -71,6 +72,7 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
       const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(out.projected, projection(x), l, hint);
       hint = chosen;
       out.assigned.push_back(chosen);
+      out.vertex.push_back(v);
       const auto& t = faces.tri[size_t(chosen)];
       const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
       double weight = 0, residual = 0, slope = 0;

@@ -74,12 +74,18 @@ WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const Verte
   return w;
 }
 
+// NOTE: the vertices' and triangles' new indices are a serial prefix count;
+// the copies into their new places run in parallel.
 Mesh write_back(const WorkMesh& w, bool precise, const CurvatureStats& curvature_stats, const ContourStats& contour) {
-  const size_t nv = w.pos.size();
+  const size_t nv = w.pos.size(), nt = w.tri.size();
   std::vector<int32_t> remap(nv, -1);
   int32_t next = 0;
   for (size_t v = 0; v < nv; ++v)
     if (w.vertex_alive[v] && !w.vfaces[v].empty()) remap[v] = next++;
+  std::vector<int32_t> slot(nt, -1);
+  int32_t faces = 0;
+  for (size_t t = 0; t < nt; ++t)
+    if (w.face_alive[t]) slot[t] = faces++;
   Mesh out;
   out.points.resize(3 * size_t(next));
   if (precise) out.precise_points.resize(3 * size_t(next));
@@ -89,9 +95,9 @@ Mesh write_back(const WorkMesh& w, bool precise, const CurvatureStats& curvature
   c.d1.resize(3 * size_t(next));
   c.d2.resize(3 * size_t(next));
   c.flags.resize(size_t(next));
-  for (size_t v = 0; v < nv; ++v) {
+  tbb::parallel_for(size_t(0), nv, [&](size_t v) {
     const int32_t r = remap[v];
-    if (r < 0) continue;
+    if (r < 0) return;
     for (int k = 0; k < 3; ++k) {
       out.points[3 * size_t(r) + k] = float(w.pos[v][k]);
       if (precise) out.precise_points[3 * size_t(r) + k] = w.pos[v][k];
@@ -105,11 +111,12 @@ Mesh write_back(const WorkMesh& w, bool precise, const CurvatureStats& curvature
     c.gauss[size_t(r)] = w.k1[v] * w.k2[v];
     c.absolute[size_t(r)] = float(w.absolute[v]);
     c.flags[size_t(r)] = w.flags[v];
-  }
-  for (size_t t = 0; t < w.tri.size(); ++t) {
-    if (!w.face_alive[t]) continue;
-    for (int v : w.tri[t]) out.triangles.push_back(remap[size_t(v)]);
-  }
+  });
+  out.triangles.resize(3 * size_t(faces));
+  tbb::parallel_for(size_t(0), nt, [&](size_t t) {
+    if (slot[t] < 0) return;
+    for (int k = 0; k < 3; ++k) out.triangles[3 * size_t(slot[t]) + size_t(k)] = remap[size_t(w.tri[t][size_t(k)])];
+  });
   c.stats = curvature_stats;
   c.stats.vertices = next;
   out.contour = contour;
