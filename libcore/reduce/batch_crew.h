@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -139,7 +140,9 @@ class BatchCrew {
   }
 
   // A helper: waits for stretches until stopped, spinning, then yielding
-  // its core now and then when nothing comes for a while.
+  // its core, then (after about a millisecond without work, as in a pass's
+  // serial stretches) sleeping 50 microseconds at a time.
+  static constexpr int kSpins = 4096, kYields = 1024;
   // NOTE: the scheduler may hand a helper's task to the calling thread
   // itself, while it waits for some parallel work of its own: that helper
   // then does nothing (the caller would otherwise wait for itself).
@@ -153,10 +156,13 @@ class BatchCrew {
         idle = 0;
         continue;
       }
-      if (++idle < 4096)
+      ++idle;
+      if (idle < kSpins)
         pause();
-      else
+      else if (idle < kSpins + kYields)
         std::this_thread::yield();
+      else
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
     }
   }
 
