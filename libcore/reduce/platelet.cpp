@@ -3,6 +3,8 @@
 // 5.2, Figure 5.4).
 #include "platelet.h"
 
+#include "prefetch.h"
+
 #include <algorithm>
 
 #include <Eigen/Geometry>
@@ -164,9 +166,13 @@ PlateletStatus gather_platelet(const WorkMesh& w, int face, Platelet& p) {
   // NOTE: the faces around T's vertices, each once: sorted and made unique
   // here rather than marked in a per-face array (one more cache line per
   // face, read and written in the queue's order all over memory).
+  for (int k = 0; k < 3; ++k) prefetch(&w.pos[size_t(p.a[size_t(k)])]);
   for (int k = 0; k < 3; ++k) {
     p.open_vertex[k] = w.boundary[size_t(p.a[size_t(k)])] != 0;
-    for (int f : w.vfaces[size_t(p.a[size_t(k)])]) p.faces.push_back(f);
+    for (int f : w.vfaces[size_t(p.a[size_t(k)])]) {
+      prefetch(&w.tri[size_t(f)]);
+      p.faces.push_back(f);
+    }
   }
   std::sort(p.faces.begin(), p.faces.end());
   p.faces.erase(std::unique(p.faces.begin(), p.faces.end()), p.faces.end());
