@@ -102,7 +102,7 @@ struct OverlapFound {};
 // curvature into *curvature_stats.
 // NOTE: the input is read where it is, not copied first (60 MB for a
 // 1M-triangle mesh with double points): only a mesh without normals is.
-WorkMesh prepared_work_mesh(const Mesh& mesh, const reduce::VertexStars& stars, const Progress& progress,
+WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const Progress& progress,
                             bool* computed, CurvatureStats* curvature_stats) {
   const Mesh* source = &mesh;
   Mesh with_normals;
@@ -291,12 +291,12 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   // The manifold checks' error first, else the overlap check's, else any other.
   reduce::validate_indices(mesh, "reduce");
   OverlapCheck overlap(mesh);
-  reduce::VertexStars stars;
+  VertexStars stars;
   WorkMesh w;
   CurvatureStats curvature_stats;
   try {
     tbb::this_task_arena::isolate([&] {
-      stars = reduce::vertex_stars(mesh);
+      stars = vertex_stars(mesh);
       reduce::validate_manifold(mesh, stars, "reduce");
     });
   } catch (...) {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "../mesh.h"
-#include "vertex_stars.h"
+#include "../vertex_stars.h"
 
 namespace isoform::reduce {
 

@@ -19,7 +19,7 @@
 
 #include "../mesh.h"
 #include "face_lists.h"
-#include "vertex_stars.h"
+#include "../vertex_stars.h"
 
 namespace isoform::reduce {
 

@@ -11,7 +11,7 @@
 
 #include "libcore/errors.h"
 #include "libcore/reduce/validate.h"
-#include "libcore/reduce/vertex_stars.h"
+#include "libcore/vertex_stars.h"
 #include "test_meshes.h"
 
 namespace isoform::reduce {

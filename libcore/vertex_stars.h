@@ -1,17 +1,18 @@
 // Each vertex's triangles (its star), as one table for the whole mesh: the
-// reduction's manifold checks read it, and the working mesh's face lists
-// are filled from it, so it is built once.
+// neighbours (topology.h) and the reduction's manifold checks read it, and
+// the reduction's working mesh fills its face lists from it, so the
+// reduction builds it once.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "../mesh.h"
+#include "mesh.h"
 
-namespace isoform::reduce {
+namespace isoform {
 
 struct VertexStars {
-  std::vector<int32_t> start;  // per vertex, into faces; vertex_count() + 1 entries
+  std::vector<int64_t> start;  // per vertex, into faces; vertex_count() + 1 entries
   std::vector<int32_t> faces;  // each vertex's triangles, ascending
 
   size_t vertex_count() const { return start.empty() ? 0 : start.size() - 1; }
@@ -23,4 +24,4 @@ struct VertexStars {
 // Every triangle index must name a vertex (validate_indices). Parallel (TBB).
 VertexStars vertex_stars(const Mesh& mesh);
 
-}  // namespace isoform::reduce
+}  // namespace isoform
