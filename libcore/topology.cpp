@@ -28,8 +28,8 @@ bool degenerate(const Mesh& mesh, size_t t) {
   return c[0] == 0 && c[1] == 0 && c[2] == 0;
 }
 
-// What one stretch of triangles finds: the stats' counts and the edges
-// whose lowest triangle is in it.
+// What one stretch of vertices finds: the stats' counts and the edges whose
+// lowest triangle it decided.
 struct EdgeCounts {
   MeshStats stats;
   long long edges = 0;
@@ -42,53 +42,124 @@ struct EdgeCounts {
   }
 };
 
-// Triangle t's neighbours into mesh.neighbours, its counts into c.
-void triangle_neighbours(Mesh& mesh, const VertexStars& stars, size_t t, EdgeCounts& c) {
-  const int32_t* tri = &mesh.triangles[3 * t];
-  c.stats.degenerate_triangles += degenerate(mesh, t);
-  for (int i = 0; i < 3; ++i) {
-    const int32_t a = tri[i], b = tri[(i + 1) % 3];
-    // Every triangle around a that also holds b shares the edge (a, b).
-    int count = 0, other = -1;
+// A triangle around a vertex, with its corners, read once per vertex.
+struct StarTriangle {
+  int32_t id;
+  int32_t v[3];
+};
+
+// Records what triangle t's edge i, from a to b, found around a: count
+// other triangles hold b, the last of them `other`; none of them comes
+// before t (lowest); one of them runs the edge from a to b too.
+void record_edge(Mesh& mesh, size_t t, int i, int count, int32_t other, bool lowest, bool same_direction,
+                 EdgeCounts& c) {
+  if (lowest) ++c.edges;  // each edge counted once, by its lowest triangle
+  if (count == 0) {
+    ++c.stats.boundary_edges;
+  } else if (count == 1) {
+    mesh.neighbours[3 * t + size_t(i)] = other;
+    if (same_direction && size_t(other) > t) ++c.stats.inconsistent_edges;
+  } else if (lowest) {
+    ++c.stats.nonmanifold_edges;
+  }
+}
+
+// The edges from vertex a to the corner after it, of every triangle around
+// a (star: a's triangles, gathered): their neighbours into mesh.neighbours,
+// their counts into c; and each triangle's degeneracy at its first corner.
+void vertex_edges(Mesh& mesh, int32_t a, const std::vector<StarTriangle>& star, EdgeCounts& c) {
+  for (size_t k = 0; k < star.size(); ++k) {
+    if (k > 0 && star[k].id == star[k - 1].id) continue;  // a triangle with a twice is listed twice
+    const size_t t = size_t(star[k].id);
+    const int32_t* tri = star[k].v;
+    if (tri[0] == a) c.stats.degenerate_triangles += degenerate(mesh, t);
+    for (int i = 0; i < 3; ++i) {
+      if (tri[i] != a) continue;
+      const int32_t b = tri[(i + 1) % 3];
+      // Every triangle around a that also holds b shares the edge (a, b).
+      int count = 0;
+      int32_t other = -1;
+      bool same_direction = false, lowest = true;
+      for (const StarTriangle& s : star) {
+        const int32_t u = s.id;
+        if (size_t(u) == t) continue;
+        const int cb = corner_of(s.v, b);
+        if (cb < 0) continue;
+        ++count;
+        other = u;
+        if (size_t(u) < t) lowest = false;
+        // A consistent neighbour runs the edge from b to a; one that runs it
+        // from a to b (a just before b) is inconsistently oriented.
+        if (s.v[(cb + 2) % 3] == a) same_direction = true;
+      }
+      record_edge(mesh, t, i, count, other, lowest, same_direction, c);
+    }
+  }
+}
+
+// The corners after and before a vertex in one of its triangles.
+struct StarSides {
+  int32_t id, next, prev;
+  int corner;  // the vertex's
+};
+
+// vertex_edges where no triangle around a repeats a corner: a's corner is
+// then unique in each, and b is in a triangle exactly when it is the corner
+// after or before a there (after: the same direction as t).
+// NOTE: without branches on the corners (a vertex's edges met its
+// triangles' corners in an order no branch predictor learns).
+void plain_vertex_edges(Mesh& mesh, const std::vector<StarSides>& star, EdgeCounts& c) {
+  for (const StarSides& e : star) {
+    const int32_t t = e.id, b = e.next;
+    int count = 0;
+    int32_t other = -1;
     bool same_direction = false, lowest = true;
-    for (const int32_t* s = stars.begin(size_t(a)); s != stars.end(size_t(a)); ++s) {
-      const int32_t u = *s;
-      if (size_t(u) == t) continue;
-      const int32_t* ut = &mesh.triangles[3 * size_t(u)];
-      const int cb = corner_of(ut, b);
-      if (cb < 0) continue;
-      ++count;
-      other = u;
-      if (size_t(u) < t) lowest = false;
-      // A consistent neighbour runs the edge from b to a; one that runs it
-      // from a to b (a just before b) is inconsistently oriented.
-      if (ut[(cb + 2) % 3] == a) same_direction = true;
+    for (const StarSides& s : star) {
+      const int after = s.next == b, elsewhere = s.id != t, hit = (after | int(s.prev == b)) & elsewhere;
+      count += hit;
+      other = hit ? s.id : other;
+      lowest &= !(hit & int(s.id < t));
+      same_direction |= bool(after & elsewhere);
     }
-    if (lowest) ++c.edges;  // each edge counted once, by its lowest triangle
-    if (count == 0) {
-      ++c.stats.boundary_edges;
-    } else if (count == 1) {
-      mesh.neighbours[3 * t + size_t(i)] = other;
-      if (same_direction && size_t(other) > t) ++c.stats.inconsistent_edges;
-    } else if (lowest) {
-      ++c.stats.nonmanifold_edges;
-    }
+    record_edge(mesh, size_t(t), e.corner, count, other, lowest, same_direction, c);
   }
 }
 
 }  // namespace
 
-// NOTE: each triangle writes its own three neighbours and counts into its
-// stretch's sums, so the triangles go side by side; the counts are sums,
-// the same for any split.
+// NOTE: every edge (a, b) of a triangle is decided around a, from a's
+// triangles copied side by side once (each triangle is read three times,
+// not once per edge and triangle around the edge's first corner); the
+// vertices go side by side, each writing its own edges' neighbours and
+// counting into its stretch's sums, the same for any split.
 void compute_neighbours(Mesh& mesh) {
-  const size_t m = mesh.triangle_count();
+  const size_t m = mesh.triangle_count(), nv = mesh.vertex_count();
   mesh.neighbours.assign(3 * m, -1);
   const VertexStars stars = vertex_stars(mesh);
   const EdgeCounts total = tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, m, 4096), EdgeCounts{},
+      tbb::blocked_range<size_t>(0, nv, 2048), EdgeCounts{},
       [&](const tbb::blocked_range<size_t>& r, EdgeCounts c) {
-        for (size_t t = r.begin(); t != r.end(); ++t) triangle_neighbours(mesh, stars, t, c);
+        std::vector<StarTriangle> star;
+        std::vector<StarSides> sides;
+        for (size_t a = r.begin(); a != r.end(); ++a) {
+          star.clear();
+          sides.clear();
+          bool plain = true;
+          for (const int32_t* u = stars.begin(a); u != stars.end(a); ++u) {
+            const int32_t* tri = &mesh.triangles[3 * size_t(*u)];
+            star.push_back({*u, {tri[0], tri[1], tri[2]}});
+            plain &= tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2];
+            const int k = tri[0] == int32_t(a) ? 0 : tri[1] == int32_t(a) ? 1 : 2;
+            sides.push_back({*u, tri[(k + 1) % 3], tri[(k + 2) % 3], k});
+          }
+          if (plain) {
+            for (const StarSides& e : sides)
+              if (e.corner == 0) c.stats.degenerate_triangles += degenerate(mesh, size_t(e.id));
+            plain_vertex_edges(mesh, sides, c);
+          } else {
+            vertex_edges(mesh, int32_t(a), star, c);
+          }
+        }
         return c;
       },
       [](EdgeCounts x, const EdgeCounts& y) {
@@ -96,7 +167,7 @@ void compute_neighbours(Mesh& mesh) {
         return x;
       });
   MeshStats stats = total.stats;
-  stats.euler_characteristic = (long long)mesh.vertex_count() - total.edges + (long long)m;
+  stats.euler_characteristic = (long long)nv - total.edges + (long long)m;
   mesh.stats = stats;
 }
 

@@ -121,6 +121,24 @@ TEST(Topology, ThreeTrianglesOnOneEdgeAreNonManifold) {
   EXPECT_EQ(m.neighbours[0], -1);
 }
 
+// A triangle (0, 0, 2) on the octahedron: around vertex 0 it is listed
+// twice, so the edge (0, 2) has three triangles' sides (non-manifold, no
+// neighbour); none of its own edges comes first; it is degenerate.
+TEST(Topology, ATriangleThatRepeatsAVertex) {
+  Mesh m = octahedron();
+  m.triangles.insert(m.triangles.end(), {0, 0, 2});
+  compute_neighbours(m);
+  EXPECT_EQ(m.stats.degenerate_triangles, 1);
+  EXPECT_EQ(m.stats.nonmanifold_edges, 1);
+  EXPECT_EQ(m.stats.boundary_edges, 0);
+  EXPECT_EQ(m.stats.inconsistent_edges, 0);
+  EXPECT_EQ(m.stats.euler_characteristic, 6 - 12 + 9);
+  EXPECT_EQ(m.neighbours[0], -1);       // triangle 0 (0, 2, 4) across (0, 2)
+  EXPECT_EQ(m.neighbours[3 * 4], -1);   // triangle 4 (2, 0, 5) across (2, 0)
+  EXPECT_EQ(m.neighbours[1], 1);        // elsewhere as before
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.neighbours[3 * 8 + size_t(i)], -1);
+}
+
 // Meshes of many stretches with random defects (flipped, dropped and
 // repeated triangles) against the edge map: the neighbours and every count.
 TEST(Topology, LargeMeshesWithDefectsAgreeWithAnEdgeMap) {
