@@ -104,7 +104,6 @@ bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3
     out.assigned_valid = false;
     return true;
   }
-  out.vertex.clear();
   auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
   // The few original vertices nearest to the new point, whose triangles
   // bound its distance to the original surface.
@@ -113,60 +112,63 @@ bool Tracker::measure(const WorkMesh& w, const Platelet& p, const Eigen::Vector3
   double near_d2[kNear] = {1e300, 1e300, 1e300, 1e300};
   const bool reuse = out.assigned_valid;
   out.assigned_valid = false;
-  size_t index = 0;
-  for (int f : p.faces)
-    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)], ++index) {
-      const Eigen::Vector3d& x = original_[size_t(v)].x;
-      // Graph mode hands x to the new face above it, else to the nearest;
-      // after refine() the face it chose is kept (in graph mode p's (x, y)
-      // did not move, so it is the same face; else the distance to it is
-      // still an upper bound of the distance to the reduced surface).
-      int best = reuse ? out.assigned[index] : 0;
-      double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
-      const size_t first = reuse ? size_t(out.assigned[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
-      // Without a bound or a measurement the kept face is all that is needed.
-      const bool evaluate = rms_ > 0 || distances || !reuse;
-      for (size_t i = first; evaluate && i < last; ++i) {
-        const auto& t = faces.tri[i];
-        double score = 0, err2 = 0, d = 0;
-        if (rms_ > 0) {
-          const double z = height_above(x, P(t[0]), P(t[1]), P(t[2]), &score);
-          err2 = (x(2) - z) * (x(2) - z);
-        } else {
-          d = point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2]));
-          score = -d;
-        }
-        if (score > best_score) {
-          best_score = score;
-          best = int(i);
-          best_err2 = err2;
-          nearest = d;
-        }
-      }
-      if (rms_ > 0 && distances) {
-        nearest = std::numeric_limits<double>::infinity();
-        for (const auto& t : faces.tri) nearest = std::min(nearest, point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2])));
-      }
-      if (distances) {
-        if (nearest > distance_) return false;
-        out.largest_distance = std::max(out.largest_distance, nearest);
-        double d2 = (x - point).squaredNorm();
-        int id = v;
-        for (int k = 0; k < kNear; ++k)
-          if (d2 < near_d2[k]) {
-            std::swap(d2, near_d2[k]);
-            std::swap(id, near_vertex[k]);
-          }
-      }
+  // (After refine() the list is the one it walked.)
+  if (!reuse) list_vertices(p, out.vertex);
+  const size_t n = out.vertex.size();
+  for (size_t index = 0; index < std::min(n, kRecordsAhead); ++index) prefetch(&original_[size_t(out.vertex[index])]);
+  for (size_t index = 0; index < n; ++index) {
+    if (index + kRecordsAhead < n) prefetch(&original_[size_t(out.vertex[index + kRecordsAhead])]);
+    const int v = out.vertex[index];
+    const Eigen::Vector3d& x = original_[size_t(v)].x;
+    // Graph mode hands x to the new face above it, else to the nearest;
+    // after refine() the face it chose is kept (in graph mode p's (x, y)
+    // did not move, so it is the same face; else the distance to it is
+    // still an upper bound of the distance to the reduced surface).
+    int best = reuse ? out.assigned[index] : 0;
+    double best_score = -std::numeric_limits<double>::infinity(), best_err2 = 0, nearest = 0;
+    const size_t first = reuse ? size_t(out.assigned[index]) : 0, last = reuse ? first + 1 : faces.tri.size();
+    // Without a bound or a measurement the kept face is all that is needed.
+    const bool evaluate = rms_ > 0 || distances || !reuse;
+    for (size_t i = first; evaluate && i < last; ++i) {
+      const auto& t = faces.tri[i];
+      double score = 0, err2 = 0, d = 0;
       if (rms_ > 0) {
-        out.delta.push_back(best_err2 - original_[size_t(v)].err2);
-        out.err2.push_back(best_err2);
-        out.largest_err2 = std::max(out.largest_err2, best_err2);
-        out.fresh += touched_[size_t(v)] ? 0 : 1;
+        const double z = height_above(x, P(t[0]), P(t[1]), P(t[2]), &score);
+        err2 = (x(2) - z) * (x(2) - z);
+      } else {
+        d = point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2]));
+        score = -d;
       }
-      out.vertex.push_back(v);
-      out.face.push_back(best);
+      if (score > best_score) {
+        best_score = score;
+        best = int(i);
+        best_err2 = err2;
+        nearest = d;
+      }
     }
+    if (rms_ > 0 && distances) {
+      nearest = std::numeric_limits<double>::infinity();
+      for (const auto& t : faces.tri) nearest = std::min(nearest, point_triangle_distance(x, P(t[0]), P(t[1]), P(t[2])));
+    }
+    if (distances) {
+      if (nearest > distance_) return false;
+      out.largest_distance = std::max(out.largest_distance, nearest);
+      double d2 = (x - point).squaredNorm();
+      int id = v;
+      for (int k = 0; k < kNear; ++k)
+        if (d2 < near_d2[k]) {
+          std::swap(d2, near_d2[k]);
+          std::swap(id, near_vertex[k]);
+        }
+    }
+    if (rms_ > 0) {
+      out.delta.push_back(best_err2 - original_[size_t(v)].err2);
+      out.err2.push_back(best_err2);
+      out.largest_err2 = std::max(out.largest_err2, best_err2);
+      out.fresh += touched_[size_t(v)] ? 0 : 1;
+    }
+    out.face.push_back(best);
+  }
   // The new point against the original triangles around those vertices (a
   // subset of the original surface, so again an upper bound).
   double near_original = std::numeric_limits<double>::infinity();

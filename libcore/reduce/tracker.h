@@ -102,6 +102,18 @@ class Tracker {
   double rms() const;
 
  private:
+  // The original vertices of p's faces, face by face, each list in its
+  // order, into `out`.
+  // NOTE: the walk reads only the links (4 bytes a vertex); the records
+  // (32 bytes, all over memory) are then read in that order, each asked
+  // for kRecordsAhead vertices early.
+  void list_vertices(const Platelet& p, std::vector<int>& out) const {
+    out.clear();
+    for (int f : p.faces)
+      for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) out.push_back(v);
+  }
+  static constexpr size_t kRecordsAhead = 8;
+
   double distance_, rms_;
   bool measure_;
   // NOTE: an original vertex's point and squared height error side by side,

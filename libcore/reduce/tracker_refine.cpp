@@ -60,42 +60,43 @@ void Tracker::refine(const WorkMesh& w, const Platelet& p, const Frame& frame, c
     if (fn.length > 0) fn.n = nn / fn.length;
   }
   out.assigned.clear();
-  out.vertex.clear();
   out.assigned_valid = true;
-  for (int f : p.faces)
-    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) {
-      const Eigen::Vector3d& x = original_[size_t(v)].x;
-      // The new face x lies on (graph: above; under a distance tolerance: the
-      // nearest; else: the one its projection onto P falls in) and x's
-      // barycentric weight of p there.
-      double l[3] = {1, 0, 0};
-      const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(out.projected, projection(x), l, hint);
-      hint = chosen;
-      out.assigned.push_back(chosen);
-      out.vertex.push_back(v);
-      const auto& t = faces.tri[size_t(chosen)];
-      const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
-      double weight = 0, residual = 0, slope = 0;
-      if (graph) {
-        weight = k >= 0 ? l[k] : 0;
-        residual = x(2) - (l[0] * P(t[0])(2) + l[1] * P(t[1])(2) + l[2] * P(t[2])(2));
-        slope = weight * direction(2);
-      } else {
-        const FaceNormal& fn = out.face_normals[size_t(chosen)];
-        if (!(fn.length > 0)) continue;
-        if (k >= 0) {
-          const Eigen::Vector3d& y1 = P(t[size_t((k + 1) % 3)]);
-          const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - y1).cross(x - y1);
-          weight = std::clamp(opp.dot(fn.n) / fn.length, 0.0, 1.0);
-        }
-        residual = (x - P(t[0])).dot(fn.n);
-        slope = weight * direction.dot(fn.n);
+  list_vertices(p, out.vertex);
+  const size_t n = out.vertex.size();
+  for (size_t i = 0; i < std::min(n, kRecordsAhead); ++i) prefetch(&original_[size_t(out.vertex[i])]);
+  for (size_t i = 0; i < n; ++i) {
+    if (i + kRecordsAhead < n) prefetch(&original_[size_t(out.vertex[i + kRecordsAhead])]);
+    const Eigen::Vector3d& x = original_[size_t(out.vertex[i])].x;
+    // The new face x lies on (graph: above; under a distance tolerance: the
+    // nearest; else: the one its projection onto P falls in) and x's
+    // barycentric weight of p there.
+    double l[3] = {1, 0, 0};
+    const int chosen = nearest ? nearest_face(faces, x, P) : containing_face(out.projected, projection(x), l, hint);
+    hint = chosen;
+    out.assigned.push_back(chosen);
+    const auto& t = faces.tri[size_t(chosen)];
+    const int k = t[0] == pv ? 0 : t[1] == pv ? 1 : t[2] == pv ? 2 : -1;
+    double weight = 0, residual = 0, slope = 0;
+    if (graph) {
+      weight = k >= 0 ? l[k] : 0;
+      residual = x(2) - (l[0] * P(t[0])(2) + l[1] * P(t[1])(2) + l[2] * P(t[2])(2));
+      slope = weight * direction(2);
+    } else {
+      const FaceNormal& fn = out.face_normals[size_t(chosen)];
+      if (!(fn.length > 0)) continue;
+      if (k >= 0) {
+        const Eigen::Vector3d& y1 = P(t[size_t((k + 1) % 3)]);
+        const Eigen::Vector3d opp = (P(t[size_t((k + 2) % 3)]) - y1).cross(x - y1);
+        weight = std::clamp(opp.dot(fn.n) / fn.length, 0.0, 1.0);
       }
-      if (weight <= 0) continue;
-      num += slope * residual;
-      den += slope * slope;
-      largest = std::max(largest, std::abs(residual));
+      residual = (x - P(t[0])).dot(fn.n);
+      slope = weight * direction.dot(fn.n);
     }
+    if (weight <= 0) continue;
+    num += slope * residual;
+    den += slope * slope;
+    largest = std::max(largest, std::abs(residual));
+  }
   // NOTE: points far from p (small weights) alone make the step ill-posed:
   // no step below the weight of one point at p's half-way, and none longer
   // than twice the largest residual.
