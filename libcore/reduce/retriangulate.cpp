@@ -2,6 +2,9 @@
 #include "retriangulate.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -43,6 +46,25 @@ bool edge_exists(const WorkMesh& w, const Platelet& p, const LocalFaces& faces, 
 }
 
 
+// The angle weight (5.21) of each local face, computed when first asked for
+// and kept until a swap replaces the face.
+// NOTE: a quadrilateral's two faces were weighed again for every pair
+// tried (some 13 convex pairs a removal on the bench's contour, with 2.6
+// swaps); a face's weight is computed with its corners in the order they
+// are stored, as the swap that makes it computes it.
+struct FaceWeights {
+  std::vector<double> value;  // NaN: not computed yet
+  void reset(size_t n) { value.assign(n, std::numeric_limits<double>::quiet_NaN()); }
+  template <class Pos>
+  double of(const LocalFaces& faces, size_t i, Pos&& P) {
+    if (std::isnan(value[i])) {
+      const auto& t = faces.tri[i];
+      value[i] = angle_weight(P(t[0]), P(t[1]), P(t[2]));
+    }
+    return value[i];
+  }
+};
+
 // What try_swap found for a pair of faces.
 enum class Swap { Done, Refused, NoEdgeLeft };
 
@@ -50,7 +72,7 @@ enum class Swap { Done, Refused, NoEdgeLeft };
 // on the two faces (no shared edge, not convex, not better); NoEdgeLeft
 // (the new diagonal is an edge already) also on the others.
 Swap try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Eigen::Vector3d& point,
-              LocalFaces& faces, size_t i, size_t j) {
+              LocalFaces& faces, FaceWeights& sigma, size_t i, size_t j) {
   const auto& ti = faces.tri[i];
   const auto& tj = faces.tri[j];
   for (int k = 0; k < 3; ++k) {
@@ -62,13 +84,15 @@ Swap try_swap(const WorkMesh& w, const Platelet& p, const Frame& frame, const Ei
       auto P = [&](int v) -> const Eigen::Vector3d& { return local_pos(w, p, point, v); };
       const Eigen::Vector3d quad[4] = {P(x), P(o2), P(y), P(o1)};
       if (!convex_projection(frame, quad)) return Swap::Refused;
-      const double before = std::min(angle_weight(P(x), P(y), P(o1)), angle_weight(P(y), P(x), P(o2)));
-      const double after = std::min(angle_weight(P(o1), P(x), P(o2)), angle_weight(P(o2), P(y), P(o1)));
+      const double before = std::min(sigma.of(faces, i, P), sigma.of(faces, j, P));
+      const double new_i = angle_weight(P(o1), P(x), P(o2)), new_j = angle_weight(P(o2), P(y), P(o1));
       // NOTE: a margin, so that rounding cannot swap a diagonal back and forth.
-      if (!(after > before + 1e-12)) return Swap::Refused;
+      if (!(std::min(new_i, new_j) > before + 1e-12)) return Swap::Refused;
       if (edge_exists(w, p, faces, o1, o2)) return Swap::NoEdgeLeft;
       faces.tri[i] = {o1, x, o2};
       faces.tri[j] = {o2, y, o1};
+      sigma.value[i] = new_i;
+      sigma.value[j] = new_j;
       faces.source[i] = faces.source[j] = -1;
       return Swap::Done;
     }
@@ -100,6 +124,8 @@ int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const
   // alone is not tried again until one of them changes. Each face carries
   // the number of the swap that last made it (0: the fan), each pair the
   // numbers it was refused with.
+  static thread_local FaceWeights sigma;
+  sigma.reset(n);
   static thread_local std::vector<int> made;
   static thread_local std::vector<std::array<int, 2>> refused;
   made.assign(n, 0);
@@ -111,7 +137,7 @@ int lawson_swaps(const WorkMesh& w, const Platelet& p, const Frame& frame, const
       for (size_t j = i + 1; j < n && !changed; ++j) {
         std::array<int, 2>& seen = refused[i * n + j];
         if (seen[0] == made[i] && seen[1] == made[j]) continue;
-        const Swap s = try_swap(w, p, frame, point, faces, i, j);
+        const Swap s = try_swap(w, p, frame, point, faces, sigma, i, j);
         if (s == Swap::Refused) seen = {made[i], made[j]};
         if (s != Swap::Done) continue;
         ++swaps;
