@@ -159,7 +159,8 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   reduce::PassQueue queue;
   // (Both stopped before the measurement at the end, which is parallel.)
   std::optional<reduce::BatchCrew> crew(std::in_place);
-  std::optional<reduce::Speculation> speculation(std::in_place, w.pos.size(), *crew);
+  std::optional<reduce::Speculation> speculation(std::in_place, w.pos.size(), w.tri.size(),
+                                                       options.remember_refusals, *crew);
   reduce::Speculation& ahead = *speculation;
   // Beyond the seed (graph mode): a removal that would take one of its knots
   // past 4 times the RMS error of the knots moved so far waits (docs/reduce.md).
@@ -245,6 +246,8 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
           continue;
         }
         count_refusal(o, stats.refused);
+        stats.refusals_remembered += proposal.recalled ? 1 : 0;
+        if (o != Outcome::Tolerance && o != Outcome::Deferred && o != Outcome::RmsStop) ahead.refused(i);
         deferred += o == Outcome::Deferred ? 1 : 0;
         if (o == Outcome::RmsStop) {
           stop = true;

@@ -41,6 +41,10 @@ struct ReduceOptions {
   // Beyond the seed: reduce only the parts that pass every entry check and
   // copy the others unchanged, instead of refusing the mesh (manifold_parts.h).
   bool manifold_parts_only = false;
+  // A refusal that depends on the triangle's own neighbourhood alone is not
+  // computed again in the next pass while that neighbourhood is unchanged
+  // (speculate.h). Only time depends on it: off gives the same result.
+  bool remember_refusals = true;
 };
 
 // Why a candidate triangle was not removed when its turn came.
@@ -60,6 +64,7 @@ struct ReduceStats {
   long long swaps = 0;       // diagonal swaps made
   long long vertex_points = 0;  // removals whose point is a vertex of T (vertex_fallback)
   int passes = 0;            // passes of Remark 5.9
+  long long refusals_remembered = 0;  // refused tries not computed again (remember_refusals)
   bool curvature_computed = false;  // the input had none, so Chapter 4 ran first
   double max_distance = 0.0; // distance bound at vertices, both ways (tolerance or measure_error), world units
   double graph_rms = 0.0;    // RMS height error at the original vertices (graph mode)

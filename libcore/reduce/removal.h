@@ -31,6 +31,9 @@ struct Proposal {
   std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
   // The vertices whose data it read: T's, and those of every platelet face.
   std::vector<int> reads;
+  // A refusal remembered from the last pass (speculate.h): only face,
+  // outcome and reads are set.
+  bool recalled = false;
 };
 
 class Remover {

@@ -11,10 +11,12 @@ namespace {
 // entries ahead are known, so their data is fetched early, in four steps
 // (the face, then its vertices, then their face lists, then those faces),
 // each from what the step before fetched. Only timing depends on it.
-void prefetch_ahead(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t i) {
+// (memo: the remembered refusals, or null.)
+void prefetch_ahead(const WorkMesh& w, const std::vector<QueueEntry>& order, const uint32_t* memo, size_t i) {
   constexpr size_t kFace = 24, kVertex = 12, kList = 5, kCorona = 2;
   if (i + kFace < order.size()) {
     const size_t f = size_t(order[i + kFace].face);
+    if (memo) prefetch(memo + f);
     prefetch(&w.tri[f]);
     prefetch(&w.face_alive[f]);
     prefetch(&w.face_stamp[f]);
@@ -59,14 +61,19 @@ void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::
 
 void Speculation::ComputeAhead::operator()(size_t k) const {
   const size_t i = ahead->entries_[k];
-  prefetch_ahead(*w, *ahead->order_, i);
-  remover->propose((*ahead->order_)[i].face, ahead->slots_[i - ahead->begin_]);
+  prefetch_ahead(*w, *ahead->order_, ahead->memo_.empty() ? nullptr : ahead->memo_.data(), i);
+  ahead->compute(*remover, (*ahead->order_)[i], ahead->slots_[i - ahead->begin_]);
   ahead->computed_[i - ahead->begin_].store(1, std::memory_order_release);
 }
 
 void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>& order, size_t begin, size_t end,
                                int pass) {
   ++batch_;
+  if (pass != pass_) {  // the buffer of two passes ago is free again
+    pass_ = pass;
+    refusals_[pass & 1].clear();
+    reads_[pass & 1].clear();
+  }
   begin_ = begin;
   order_ = &order;
   ahead_ = false;
@@ -108,7 +115,7 @@ bool Speculation::read_changed(size_t i) const {
 const Proposal& Speculation::current(const Remover& remover, size_t i) {
   Proposal& p = slots_[i - begin_];
   if (!computed_[i - begin_].load(std::memory_order_acquire) || read_changed(i)) {
-    remover.propose((*order_)[i].face, p);
+    compute(remover, (*order_)[i], p);
     computed_[i - begin_].store(1, std::memory_order_relaxed);
   }
   return p;
@@ -129,9 +136,59 @@ void Speculation::prefetch(const WorkMesh& w, size_t i) const {
   }
 }
 
+// NOTE: the helpers read changed_ (recall) while this thread marks the
+// vertices of the batch's applied removals: relaxed atomic accesses. A
+// helper that misses a mark recalls a refusal whose reads read_changed()
+// then finds changed, and the removal is computed again before it counts.
 void Speculation::applied(const Proposal& p) {
-  for (int v : p.platelet.a) changed_[size_t(v)] = batch_;
-  for (int v : p.platelet.ring) changed_[size_t(v)] = batch_;
+  for (int v : p.platelet.a) __atomic_store_n(&changed_[size_t(v)], batch_, __ATOMIC_RELAXED);
+  for (int v : p.platelet.ring) __atomic_store_n(&changed_[size_t(v)], batch_, __ATOMIC_RELAXED);
+}
+
+void Speculation::compute(const Remover& remover, const QueueEntry& e, Proposal& out) const {
+  if (recall(e, out)) return;
+  remover.propose(e.face, out);
+  out.recalled = false;
+}
+
+// Valid when the refusal is the last pass's, of the face as it is now, and
+// no vertex it read changed in its batch or after (a removal applied later
+// in the same batch marks its vertices with that batch's number).
+bool Speculation::recall(const QueueEntry& e, Proposal& out) const {
+  if (memo_.empty()) return false;
+  const uint32_t k = __atomic_load_n(&memo_[size_t(e.face)], __ATOMIC_RELAXED);
+  if (k == 0) return false;
+  const std::vector<Refusal>& refusals = refusals_[(pass_ - 1) & 1];
+  if (k > refusals.size()) return false;
+  const Refusal& r = refusals[k - 1];
+  if (r.face != e.face || r.pass != pass_ - 1 || r.stamp != e.stamp) return false;
+  const int* reads = reads_[(pass_ - 1) & 1].data() + r.begin;
+  for (uint32_t j = 0; j < r.count; ++j)
+    if (__atomic_load_n(&changed_[size_t(reads[j])], __ATOMIC_RELAXED) >= r.batch) return false;
+  out.face = e.face;
+  out.outcome = r.outcome;
+  out.reads.assign(reads, reads + r.count);
+  out.recalled = true;
+  return true;
+}
+
+void Speculation::refused(size_t i) {
+  if (memo_.empty()) return;
+  const Proposal& p = slots_[i - begin_];
+  const QueueEntry& e = (*order_)[i];
+  std::vector<Refusal>& refusals = refusals_[pass_ & 1];
+  std::vector<int>& reads = reads_[pass_ & 1];
+  Refusal r;
+  r.face = e.face;
+  r.pass = pass_;
+  r.stamp = e.stamp;
+  r.batch = batch_;
+  r.begin = uint32_t(reads.size());
+  r.count = uint32_t(p.reads.size());
+  r.outcome = p.outcome;
+  reads.insert(reads.end(), p.reads.begin(), p.reads.end());
+  refusals.push_back(r);
+  __atomic_store_n(&memo_[size_t(e.face)], uint32_t(refusals.size()), __ATOMIC_RELAXED);
 }
 
 }  // namespace isoform::reduce

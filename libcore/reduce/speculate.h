@@ -16,6 +16,15 @@
 // changed reads what it would read now, and gives what it would give now.
 // What depends on every removal so far (the tracker's RMS and guard, the
 // target count) is decided when the removal is applied (Remover::apply).
+//
+// Beyond that, a pass remembers the removals it refused for their own
+// neighbourhood (corona, half-plane, flip, non-manifold, boundary: the
+// outcomes Remover::propose decides from what it read alone). When the next
+// pass meets the same face again, unchanged (same stamp), and no removal
+// since changed a vertex the refusal read, the removal would read the same
+// data and be refused the same way: it is not computed again. The tracker's
+// outcomes (tolerance, guard) depend on every removal so far and are never
+// remembered.
 #pragma once
 
 #include <atomic>
@@ -32,7 +41,10 @@ namespace isoform::reduce {
 class Speculation {
  public:
   // The removals computed ahead run on `crew` (batch_crew.h).
-  Speculation(size_t vertices, BatchCrew& crew) : changed_(vertices, 0), crew_(crew) {}
+  // `faces`: the working mesh's face ids (they never grow); `remember`:
+  // refusals are remembered from one pass to the next.
+  Speculation(size_t vertices, size_t faces, bool remember, BatchCrew& crew)
+      : changed_(vertices, 0), memo_(remember ? faces : 0, 0), crew_(crew) {}
   Speculation(const Speculation&) = delete;
   Speculation& operator=(const Speculation&) = delete;
   ~Speculation() { crew_.settle(); }
@@ -65,10 +77,33 @@ class Speculation {
   void prefetch(const WorkMesh& w, size_t i) const;
   // Records that p was applied: its vertices changed.
   void applied(const Proposal& p);
+  // Records that entry i's removal, as current() gave it, was refused (its
+  // outcome one that depends on its own neighbourhood alone), so that the
+  // next pass need not compute it again while nothing it read changes.
+  void refused(size_t i);
 
  private:
   // Waits until entry i's removal, computed ahead, is there.
   void wait_for(size_t i) const;
+  // Entry e's removal: the refusal the last pass remembered for its face
+  // when nothing it read has changed since (out.recalled), else computed.
+  void compute(const Remover& remover, const QueueEntry& e, Proposal& out) const;
+  bool recall(const QueueEntry& e, Proposal& out) const;
+
+  // A refused removal of the pass `pass`, decided in batch `batch`: its
+  // reads are reads_[pass & 1][begin, begin + count).
+  struct Refusal {
+    int face = -1;
+    int pass = 0;
+    uint32_t stamp = 0;
+    uint32_t batch = 0;
+    uint32_t begin = 0, count = 0;
+    Outcome outcome = Outcome::Corona;
+  };
+  std::vector<uint32_t> memo_;          // per face: 1 + its refusal's index, 0: none (empty: off)
+  std::vector<Refusal> refusals_[2];    // by the pass's parity: this pass's, the last one's
+  std::vector<int> reads_[2];
+  int pass_ = 0;
 
   // Computes the k-th current entry's removal (a crew item).
   struct ComputeAhead {

@@ -444,5 +444,71 @@ TEST(Reduce, OneThreadAndAllThreadsGiveTheSameBits) {
   }
 }
 
+// A torus of Figure 5.10 with n small tori beside it: the small ones soon
+// cannot lose a triangle (their coronas close up), so every later pass
+// meets the same refusals again while the large torus goes on.
+Mesh torus_and_small_tori(int n) {
+  Mesh m = figure510_torus(160, 80);
+  const Mesh small = figure510_torus(12, 6);
+  for (int k = 0; k < n; ++k) {
+    const int32_t offset = int32_t(m.vertex_count());
+    for (size_t i = 0; i < small.precise_points.size(); ++i) {
+      const double x = 0.2 * small.precise_points[i] + (i % 3 == 0 ? 4.0 + 1.5 * k : i % 3 == 1 ? 4.0 : 0.0);
+      m.precise_points.push_back(x);
+      m.points.push_back(float(x));
+    }
+    for (int32_t v : small.triangles) m.triangles.push_back(v + offset);
+  }
+  return m;
+}
+
+// Remembered refusals save work only: on and off give the same bits, and
+// the memory is used (so the comparison can fail when it goes wrong).
+TEST(Reduce, RememberedRefusalsGiveWhatComputingEveryTryGives) {
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    ReduceOptions options;
+    double keep;
+    long long remembered;  // at least (graph: its refusals are mostly the guard's, never remembered)
+  };
+  std::vector<Case> cases;
+  cases.push_back({"torus and small tori", torus_and_small_tori(40), ReduceOptions{}, 0.01, 10000});
+  {
+    ReduceOptions o;
+    o.lock_boundary = true;
+    cases.push_back({"paraboloid, boundary locked", truth::graph_mesh(graph("paraboloid"), 61), o, 0.02, 100});
+  }
+  {
+    ReduceOptions o;
+    o.graph = true;
+    o.measure_error = true;
+    cases.push_back({"graph", truth::graph_mesh(graph("trigonometric"), 101), o, 0.01, 0});
+  }
+  for (Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Mesh on = c.mesh, off = c.mesh;
+    ReduceOptions no_memory = c.options;
+    no_memory.remember_refusals = false;
+    const ReduceStats s_on = reduce(on, c.keep, c.options), s_off = reduce(off, c.keep, no_memory);
+    EXPECT_GE(s_on.refusals_remembered, c.remembered);
+    EXPECT_EQ(s_off.refusals_remembered, 0);
+    EXPECT_GT(s_on.passes, 3);
+    EXPECT_EQ(s_on.passes, s_off.passes);
+    EXPECT_EQ(s_on.removals, s_off.removals);
+    EXPECT_EQ(s_on.swaps, s_off.swaps);
+    EXPECT_EQ(s_on.refused.corona, s_off.refused.corona);
+    EXPECT_EQ(s_on.refused.half_plane, s_off.refused.half_plane);
+    EXPECT_EQ(s_on.refused.flip, s_off.refused.flip);
+    EXPECT_EQ(s_on.refused.nonmanifold, s_off.refused.nonmanifold);
+    EXPECT_EQ(s_on.refused.boundary, s_off.refused.boundary);
+    EXPECT_EQ(s_on.refused.tolerance, s_off.refused.tolerance);
+    EXPECT_EQ(on.triangles, off.triangles);
+    EXPECT_EQ(on.precise_points, off.precise_points);
+    EXPECT_EQ(s_on.graph_rms, s_off.graph_rms);
+    EXPECT_EQ(s_on.max_distance, s_off.max_distance);
+  }
+}
+
 }  // namespace
 }  // namespace isoform
