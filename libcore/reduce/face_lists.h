@@ -23,6 +23,8 @@
 #include <mutex>
 #include <vector>
 
+#include "big_vector.h"
+
 namespace isoform::reduce {
 
 class FaceLists {
@@ -120,7 +122,7 @@ class FaceLists {
     free_spill_.push_back(index);
   }
 
-  std::vector<Record> records_;
+  BigVector<Record> records_;  // (big_vector.h)
   std::vector<std::vector<int>> spill_;
   std::vector<size_t> free_spill_;
   std::unique_ptr<std::mutex> lock_;  // of spill_ and free_spill_

@@ -11,6 +11,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "big_vector.h"
+
 namespace isoform::reduce {
 namespace {
 
@@ -49,8 +51,8 @@ struct Corners {
 };
 
 // Float boxes rounded outward, so that they hold the double triangles.
-std::vector<Box> triangle_boxes(const Corners& corners, size_t nt) {
-  std::vector<Box> boxes(nt);
+BigVector<Box> triangle_boxes(const Corners& corners, size_t nt) {
+  BigVector<Box> boxes(nt);
   tbb::parallel_for(size_t(0), nt, [&](size_t t) {
     Point3 p[3];
     corners.of(t, p);
@@ -82,7 +84,7 @@ struct Grid {
 };
 
 // Cells about the mean box size, at most 2^21 along the largest extent.
-Grid make_grid(const std::vector<Box>& boxes) {
+Grid make_grid(const BigVector<Box>& boxes) {
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, sum = 0;
   size_t n = 0;
   for (const Box& b : boxes) {
@@ -112,8 +114,8 @@ struct CellRange {
   size_t count() const { return size_t(hi[0] - lo[0] + 1) * size_t(hi[1] - lo[1] + 1) * size_t(hi[2] - lo[2] + 1); }
 };
 
-std::vector<CellRange> cell_ranges(const std::vector<Box>& boxes, const Grid& g) {
-  std::vector<CellRange> ranges(boxes.size());
+BigVector<CellRange> cell_ranges(const BigVector<Box>& boxes, const Grid& g) {
+  BigVector<CellRange> ranges(boxes.size());
   tbb::parallel_for(size_t(0), boxes.size(), [&](size_t t) {
     if (boxes[t].valid)
       for (int k = 0; k < 3; ++k) {
@@ -156,7 +158,7 @@ struct BucketMap {
   }
 };
 
-BucketMap bucket_map(const std::vector<CellRange>& ranges, size_t entries) {
+BucketMap bucket_map(const BigVector<CellRange>& ranges, size_t entries) {
   int32_t top[3] = {0, 0, 0};
   for (const CellRange& r : ranges)
     for (int k = 0; k < 3; ++k) top[k] = std::max(top[k], r.hi[k]);
@@ -179,8 +181,8 @@ BucketMap bucket_map(const std::vector<CellRange>& ranges, size_t entries) {
 // (cell, triangle) entries grouped by block (a counting sort, O(n)); each
 // bucket is sorted later, so equal cells end up adjacent.
 struct Buckets {
-  std::vector<size_t> start;  // per bucket, into entries
-  std::vector<Entry> entries;
+  BigVector<size_t> start;  // per bucket, into entries (big_vector.h)
+  BigVector<Entry> entries;
   bool dense = false;         // each bucket one block (BucketMap::dense)
 };
 
@@ -206,8 +208,8 @@ void group_by_cell(Entry* first, Entry* last, std::vector<Entry>& scratch) {
 // side, each with its own counts per bucket; a bucket then holds the first
 // stretch's entries, then the second's, and so on: the order of one pass over
 // all triangles.
-Buckets grid_entries(const std::vector<Box>& boxes, const Grid& g) {
-  const std::vector<CellRange> ranges = cell_ranges(boxes, g);
+Buckets grid_entries(const BigVector<Box>& boxes, const Grid& g) {
+  const BigVector<CellRange> ranges = cell_ranges(boxes, g);
   size_t n = 0;
   for (const CellRange& r : ranges) n += r.count();
   const BucketMap bucket = bucket_map(ranges, n);
@@ -274,7 +276,7 @@ struct BucketScratch {
 
 std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
   const Corners corners(mesh);
-  const std::vector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
+  const BigVector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
   const Grid grid = make_grid(boxes);
   Buckets buckets = grid_entries(boxes, grid);
   tbb::enumerable_thread_specific<BucketScratch> scratch;

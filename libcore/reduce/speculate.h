@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "batch_crew.h"
+#include "big_vector.h"
 #include "queue.h"
 #include "removal.h"
 
@@ -100,7 +101,7 @@ class Speculation {
     uint32_t begin = 0, count = 0;
     Outcome outcome = Outcome::Corona;
   };
-  std::vector<uint32_t> memo_;          // per face: 1 + its refusal's index, 0: none (empty: off)
+  BigVector<uint32_t> memo_;            // per face: 1 + its refusal's index, 0: none (empty: off)
   std::vector<Refusal> refusals_[2];    // by the pass's parity: this pass's, the last one's
   std::vector<int> reads_[2];
   int pass_ = 0;
@@ -120,7 +121,7 @@ class Speculation {
   bool ahead_ = false;              // the batch's removals are computed ahead
   std::vector<uint8_t> current_;    // per slot: current when the batch began
   std::vector<size_t> entries_;     // the batch's current entries
-  std::vector<uint32_t> changed_;   // per vertex: the batch that last changed it
+  BigVector<uint32_t> changed_;     // per vertex: the batch that last changed it (big_vector.h)
   uint32_t batch_ = 0;
   size_t begin_ = 0;
   const std::vector<QueueEntry>* order_ = nullptr;

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "assign.h"
+#include "big_vector.h"
 #include "prefetch.h"
 #include "retriangulate.h"
 
@@ -123,10 +124,11 @@ class Tracker {
     Eigen::Vector3d x;
     double err2 = 0;  // squared height error (graph mode)
   };
-  std::vector<Original> original_;
-  std::vector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
-  std::vector<std::array<int, 3>> original_tri_;
-  std::vector<int> head_, next_;  // current face -> its original vertices (linked)
+  // (big_vector.h)
+  BigVector<Original> original_;
+  BigVector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
+  BigVector<std::array<int, 3>> original_tri_;
+  BigVector<int> head_, next_;  // current face -> its original vertices (linked)
   double sum_err2_ = 0, max_distance_ = 0;
   std::vector<uint8_t> touched_;  // per original vertex: its error was ever computed (graph mode)
   long long touched_count_ = 0;

@@ -18,23 +18,25 @@
 #include <Eigen/Core>
 
 #include "../mesh.h"
+#include "big_vector.h"
 #include "face_lists.h"
 #include "../vertex_stars.h"
 
 namespace isoform::reduce {
 
 struct WorkMesh {
-  std::vector<Eigen::Vector3d> pos;
-  std::vector<std::array<int, 3>> tri;
-  std::vector<uint8_t> face_alive;
-  std::vector<uint32_t> face_stamp;  // changes whenever the face does
-  std::vector<int> face_pass;        // the pass that made the face (0: input)
-  std::vector<double> weight;        // ω (5.23), set when the face is made (queue.h)
+  // (The arrays the removals read all over: big_vector.h.)
+  BigVector<Eigen::Vector3d> pos;
+  BigVector<std::array<int, 3>> tri;
+  BigVector<uint8_t> face_alive;
+  BigVector<uint32_t> face_stamp;  // changes whenever the face does
+  BigVector<int> face_pass;        // the pass that made the face (0: input)
+  BigVector<double> weight;        // ω (5.23), set when the face is made (queue.h)
   FaceLists vfaces;  // per vertex: the faces around it
-  std::vector<uint8_t> vertex_alive, boundary;
+  BigVector<uint8_t> vertex_alive, boundary;
   // Per vertex: absolute curvature |k1| + |k2| (the weights), and the rest
   // of the curvature and the normal for the result.
-  std::vector<double> absolute;
+  BigVector<double> absolute;
   std::vector<float> k1, k2, normal, d1, d2;
   std::vector<uint8_t> flags;
   long long live_faces = 0;
