@@ -7,7 +7,10 @@
 // own. An array of 2 MB or more is therefore mapped on its own, aligned to
 // 2 MB and marked for transparent huge pages (madvise; the kernel may still
 // give 4 KB pages, and nothing but timing depends on it). Smaller arrays use
-// the ordinary allocator.
+// the ordinary allocator. Where the kernel is set to compact memory for such
+// regions (its defrag setting `madvise`), a first write may wait for a
+// 2 MB page to be freed up: the reduction allocates these arrays once per
+// call, a few dozen of them.
 #pragma once
 
 #include <cstddef>
