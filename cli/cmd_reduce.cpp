@@ -77,6 +77,10 @@ Command add_reduce_command(CLI::App& parent) {
                 "Instead of failing on bad input, reduce only the parts (triangles joined by edges) that "
                 "pass every check and copy the others unchanged; --keep then counts the reduced parts' "
                 "triangles. The summary says which parts were left alone and why");
+  app->add_flag("--no-overlap", args->settings.prevent_overlap,
+                "Refuse every removal whose new triangles would cross another triangle, so that the "
+                "result does not overlap itself where two sheets lie close (thin bone) and can be "
+                "reduced again; takes about 2-3 times as long");
   add_progress_flags(*app, args->progress);
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args] { run_reduce(*args); }};

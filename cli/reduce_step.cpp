@@ -57,6 +57,7 @@ double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& s, const std::strin
   o.point_method = s.point == "quadric" ? ISOFORM_REDUCE_POINT_QUADRIC : ISOFORM_REDUCE_POINT_QUADRATIC;
   o.measure_error = 1;
   o.manifold_parts_only = s.manifold_parts ? 1 : 0;
+  o.prevent_overlap = s.prevent_overlap ? 1 : 0;
   const auto start = std::chrono::steady_clock::now();
   try {
     run_with_progress([&](isoform_progress* p) { return isoform_reduce(mesh, &o, p); }, progress);
@@ -87,7 +88,8 @@ Json reduce_json(const isoform_mesh* mesh, double seconds) {
                 {"flip", s.refused_flip},
                 {"nonmanifold", s.refused_nonmanifold},
                 {"boundary", s.refused_boundary},
-                {"tolerance", s.refused_tolerance}}},
+                {"tolerance", s.refused_tolerance},
+                {"overlap", s.refused_overlap}}},
               {"parts_left_alone", s.parts_left_alone},
               {"triangles_left_alone", s.triangles_left_alone},
               {"left_alone", left_alone(mesh, s)},

@@ -18,6 +18,7 @@ struct ReduceSettings {
   std::string point = "quadratic";  // quadratic | quadric
   bool refine_point = true;          // false: the seed's point on the fitted surface
   bool manifold_parts = false;       // reduce the parts that pass the checks, copy the others
+  bool prevent_overlap = false;      // refuse removals whose triangles would cross others
 };
 
 // "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.

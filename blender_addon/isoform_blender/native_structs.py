@@ -175,6 +175,7 @@ class ReduceOptions(ctypes.Structure):
         ("refine_point", ctypes.c_int),
         ("vertex_fallback", ctypes.c_int),
         ("manifold_parts_only", ctypes.c_int),
+        ("prevent_overlap", ctypes.c_int),
     ]
 
 
@@ -201,6 +202,7 @@ class ReduceStats(ctypes.Structure):
         ("refused_tolerance", c_long_long),
         ("parts_left_alone", c_long_long),
         ("triangles_left_alone", c_long_long),
+        ("refused_overlap", c_long_long),
     ]
 
 

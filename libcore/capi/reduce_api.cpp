@@ -26,6 +26,7 @@ isoform::ReduceOptions to_options(const isoform_reduce_options& o) {
   r.refine_point = o.refine_point != 0;
   r.vertex_fallback = o.vertex_fallback != 0;
   r.manifold_parts_only = o.manifold_parts_only != 0;
+  r.prevent_overlap = o.prevent_overlap != 0;
   return r;
 }
 
@@ -52,6 +53,7 @@ isoform_reduce_stats to_stats(const isoform::ReduceStats& s) {
   o.refused_tolerance = s.refused.tolerance;
   o.parts_left_alone = s.parts_left_alone;
   o.triangles_left_alone = s.triangles_left_alone;
+  o.refused_overlap = s.refused.overlap;
   return o;
 }
 

@@ -137,6 +137,7 @@ void count_refusal(Outcome o, ReduceRefusals& r) {
     case Outcome::Flip: ++r.flip; break;
     case Outcome::Nonmanifold: ++r.nonmanifold; break;
     case Outcome::Boundary: ++r.boundary; break;
+    case Outcome::Overlap: ++r.overlap; break;
     case Outcome::Tolerance:
     case Outcome::Deferred:
     case Outcome::RmsStop: ++r.tolerance; break;
@@ -188,6 +189,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   std::vector<const reduce::Proposal*> pending;
   while (w.live_faces > target) {
     const int pass = ++stats.passes;
+    remover.refit_grid();
     long long removed = 0, deferred = 0;
     bool stop = false, reached = false;
     // (The removals computed ahead are all there first: they read the mesh.)
@@ -247,7 +249,8 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         }
         count_refusal(o, stats.refused);
         stats.refusals_remembered += proposal.recalled ? 1 : 0;
-        if (o != Outcome::Tolerance && o != Outcome::Deferred && o != Outcome::RmsStop) ahead.refused(i);
+        if (o != Outcome::Tolerance && o != Outcome::Deferred && o != Outcome::RmsStop && o != Outcome::Overlap)
+          ahead.refused(i);
         deferred += o == Outcome::Deferred ? 1 : 0;
         if (o == Outcome::RmsStop) {
           stop = true;

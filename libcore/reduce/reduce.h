@@ -45,6 +45,11 @@ struct ReduceOptions {
   // computed again in the next pass while that neighbourhood is unchanged
   // (speculate.h). Only time depends on it: off gives the same result.
   bool remember_refusals = true;
+  // Beyond the seed: refuse a removal whose new triangles would cross a
+  // triangle of the mesh outside its platelet (face_grid.h), so the result
+  // does not overlap itself where two sheets of the input lie close. Off by
+  // default: it costs about twice the time (docs/reduce.md).
+  bool prevent_overlap = false;
 };
 
 // Why a candidate triangle was not removed when its turn came.
@@ -55,6 +60,7 @@ struct ReduceRefusals {
   long long nonmanifold = 0; // a new edge would be shared by three triangles, or a duplicate
   long long boundary = 0;    // locked boundary, or the boundary would leave its line (graph)
   long long tolerance = 0;   // the distance tolerance would be exceeded
+  long long overlap = 0;     // a new triangle would cross another one (prevent_overlap)
 };
 
 struct ReduceStats {

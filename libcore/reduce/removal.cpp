@@ -45,7 +45,9 @@ double tracked_rms(const ReduceOptions& o) {
 
 Remover::Remover(WorkMesh& w, const ReduceOptions& options)
     : w_(w), options_(options),
-      tracker_(w, tracked_distance(options), tracked_rms(options), options.measure_error) {}
+      tracker_(w, tracked_distance(options), tracked_rms(options), options.measure_error) {
+  if (options.prevent_overlap) grid_ = std::make_unique<FaceGrid>(w);
+}
 
 // Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
 // open corona it is not the centroid): p's projection onto P lies strictly
@@ -142,6 +144,7 @@ void Remover::propose(int f, Proposal& out) const {
   out.platelet.face = -1;
   out.platelet.faces.clear();
   out.platelet.ring.clear();
+  out.region = out.changes = Box3f();
   out.outcome = evaluate(out);
   // What it read: T's vertices, and every vertex of the platelet's faces
   // (after a successful gather, the polygon).
@@ -192,6 +195,12 @@ Outcome Remover::evaluate(Proposal& q) const {
   }
   for (int v : platelet.ring) prefetch(w_.vfaces.record(size_t(v)));
   if (tracker_.active() && !tracker_.measure(w_, platelet, q.point, q.faces, q.pending)) return Outcome::Tolerance;
+  if (grid_) {
+    const bool crosses = grid_->crosses(w_, platelet, q.point, q.faces, &q.region);
+    q.changes = q.region;
+    q.changes.add(grid_->boxes_of(platelet));
+    if (crosses) return Outcome::Overlap;
+  }
   new_weights(q);
   return Outcome::Removed;
 }
@@ -266,6 +275,7 @@ void Remover::commit(const Proposal& q, int pass) {
   }
   for (size_t i = 0; i < faces.tri.size(); ++i) w_.weight[size_t(p.faces[i])] = q.weights[i];
   if (tracker_.active()) tracker_.relink(p, q.pending, p.faces.data());
+  if (grid_) grid_->update(w_, p, faces.tri.size());
 }
 
 }  // namespace isoform::reduce

@@ -4,8 +4,10 @@
 // the removal itself: the replacement point, the fan, the swaps, the commit.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "face_grid.h"
 #include "platelet.h"
 #include "reduce.h"
 #include "retriangulate.h"
@@ -13,7 +15,7 @@
 
 namespace isoform::reduce {
 
-enum class Outcome { Removed, Corona, HalfPlane, Flip, Nonmanifold, Boundary, Tolerance, RmsStop, Deferred };
+enum class Outcome { Removed, Corona, HalfPlane, Flip, Nonmanifold, Boundary, Overlap, Tolerance, RmsStop, Deferred };
 
 // The removal of one triangle as computed against the mesh as it is, before
 // anything changes: what the tests that depend on its own neighbourhood
@@ -31,6 +33,10 @@ struct Proposal {
   std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
   // The vertices whose data it read: T's, and those of every platelet face.
   std::vector<int> reads;
+  // With the overlap guard (face_grid.h), once it ran: the boxes its test
+  // read (the new faces'), and those a commit would change (the old and the
+  // new faces'); empty otherwise.
+  Box3f region, changes;
   // A refusal remembered from the last pass (speculate.h): only face,
   // outcome and reads are set.
   bool recalled = false;
@@ -53,6 +59,10 @@ class Remover {
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
+  // The overlap guard's grid fitted again to the faces (a pass's start).
+  void refit_grid() {
+    if (grid_) grid_->refit(w_);
+  }
   Tracker& tracker() { return tracker_; }
 
  private:
@@ -66,6 +76,7 @@ class Remover {
   WorkMesh& w_;
   ReduceOptions options_;
   Tracker tracker_;
+  std::unique_ptr<FaceGrid> grid_;  // prevent_overlap
   long long swaps_ = 0, vertex_points_ = 0;
 };
 

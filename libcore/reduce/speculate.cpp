@@ -76,6 +76,7 @@ void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>&
   }
   begin_ = begin;
   order_ = &order;
+  changes_.clear();
   ahead_ = false;
   const size_t n = end - begin;
   if (slots_.size() < n) slots_.resize(n);
@@ -107,8 +108,13 @@ void Speculation::wait_for(size_t i) const {
 bool Speculation::read_changed(size_t i) const {
   wait_for(i);
   if (!computed_[i - begin_].load(std::memory_order_acquire)) return false;
-  for (int v : slots_[i - begin_].reads)
+  const Proposal& p = slots_[i - begin_];
+  for (int v : p.reads)
     if (changed_[size_t(v)] == batch_) return true;
+  // The overlap guard read the faces in its boxes (face_grid.h).
+  if (!p.region.empty())
+    for (const Box3f& b : changes_)
+      if (b.meets(p.region)) return true;
   return false;
 }
 
@@ -143,6 +149,7 @@ void Speculation::prefetch(const WorkMesh& w, size_t i) const {
 void Speculation::applied(const Proposal& p) {
   for (int v : p.platelet.a) __atomic_store_n(&changed_[size_t(v)], batch_, __ATOMIC_RELAXED);
   for (int v : p.platelet.ring) __atomic_store_n(&changed_[size_t(v)], batch_, __ATOMIC_RELAXED);
+  if (!p.changes.empty()) changes_.push_back(p.changes);
 }
 
 void Speculation::compute(const Remover& remover, const QueueEntry& e, Proposal& out) const {
@@ -167,6 +174,7 @@ bool Speculation::recall(const QueueEntry& e, Proposal& out) const {
     if (__atomic_load_n(&changed_[size_t(reads[j])], __ATOMIC_RELAXED) >= r.batch) return false;
   out.face = e.face;
   out.outcome = r.outcome;
+  out.region = out.changes = Box3f();
   out.reads.assign(reads, reads + r.count);
   out.recalled = true;
   return true;

@@ -45,7 +45,7 @@ class Speculation {
   // `faces`: the working mesh's face ids (they never grow); `remember`:
   // refusals are remembered from one pass to the next.
   Speculation(size_t vertices, size_t faces, bool remember, BatchCrew& crew)
-      : changed_(vertices, 0), memo_(remember ? faces : 0, 0), crew_(crew) {}
+      : memo_(remember ? faces : 0, 0), changed_(vertices, 0), crew_(crew) {}
   Speculation(const Speculation&) = delete;
   Speculation& operator=(const Speculation&) = delete;
   ~Speculation() { crew_.settle(); }
@@ -122,6 +122,7 @@ class Speculation {
   std::vector<uint8_t> current_;    // per slot: current when the batch began
   std::vector<size_t> entries_;     // the batch's current entries
   BigVector<uint32_t> changed_;     // per vertex: the batch that last changed it (big_vector.h)
+  std::vector<Box3f> changes_;      // the boxes the batch's applied removals changed (face_grid.h)
   uint32_t batch_ = 0;
   size_t begin_ = 0;
   const std::vector<QueueEntry>* order_ = nullptr;

@@ -157,6 +157,7 @@ int main(void) {
   FIELD(isoform_reduce_options, refine_point);
   FIELD(isoform_reduce_options, vertex_fallback);
   FIELD(isoform_reduce_options, manifold_parts_only);
+  FIELD(isoform_reduce_options, prevent_overlap);
   end();
 
   begin("isoform_reduce_stats", sizeof(isoform_reduce_stats));
@@ -180,6 +181,7 @@ int main(void) {
   FIELD(isoform_reduce_stats, refused_tolerance);
   FIELD(isoform_reduce_stats, parts_left_alone);
   FIELD(isoform_reduce_stats, triangles_left_alone);
+  FIELD(isoform_reduce_stats, refused_overlap);
   end();
 
   begin("isoform_patch_options", sizeof(isoform_patch_options));

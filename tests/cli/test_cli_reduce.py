@@ -78,7 +78,8 @@ def expect_refused(tmp, args, path, message, inputs):
 
 def case_help(tmp):
     proc = run("reduce", "--help")
-    for option in ("--keep", "--tolerance", "--lock-boundary", "--point", "--json", "--progress", "--quiet"):
+    for option in ("--keep", "--tolerance", "--lock-boundary", "--point", "--no-overlap", "--json", "--progress",
+                   "--quiet"):
         expect(option in proc.stdout, f"reduce --help does not mention {option}")
     expect("--reduce" in run("contour", "--help").stdout, "contour --help does not mention --reduce")
 
@@ -243,11 +244,39 @@ def case_sphere_contour_passes(tmp):
            f"{summary}")
 
 
+def case_no_overlap(tmp):
+    """headsq at 1150.5 to 10 %: the plain reduction's output crosses itself (so reducing it again is
+    refused); with --no-overlap it does not, and reduces again with the same parts and genus."""
+    vdb = os.path.join(tmp, "head.vdb")
+    run("convert", data("headsq_64x64x93_u16le.raw"), "--dims", "64,64,93", "--type", "u16", "-o", vdb)
+    mesh = os.path.join(tmp, "head.ply")
+    run("contour", vdb, "--iso", "1150.5", "-q", "-o", mesh)
+    plain = os.path.join(tmp, "plain.ply")
+    summary, _ = run_json("reduce", mesh, "--keep", "10%", "-o", plain)
+    expect(summary["refused"]["overlap"] == 0, f"the guard ran unasked: {summary['refused']}")
+    expect_refused(tmp, ["reduce", plain, "-o", os.path.join(tmp, "again.ply")], plain,
+                   "the mesh overlaps itself", ["head.vdb", "head.ply", "plain.ply"])
+    guarded = os.path.join(tmp, "guarded.obj")
+    summary, _ = run_json("reduce", mesh, "--keep", "10%", "--no-overlap", "-o", guarded)
+    expect(summary["refused"]["overlap"] > 0, f"{summary['refused']}")
+    expect(summary["triangles_after"] <= summary["triangles_before"] // 10 + 1, f"{summary}")
+    again = os.path.join(tmp, "again.obj")
+    second, _ = run_json("reduce", guarded, "--keep", "95%", "-o", again)
+    expect(second["parts_left_alone"] == 0 and second["triangles_after"] < second["triangles_before"], f"{second}")
+    points, _, faces, _ = base.read_ply(mesh)
+    chi = euler(points, faces)
+    for path in (guarded, again):
+        points, _, faces = base.read_obj(path)
+        base.check_closed(faces, len(points), path)
+        expect(parts(faces) == summary["parts"], f"{path}: {parts(faces)} parts, the contour has {summary['parts']}")
+        expect(euler(points, faces) == chi, f"{path}: Euler characteristic {euler(points, faces)}, the contour's {chi}")
+
+
 GROUPS = {
     "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
                    case_overlap, case_manifold_parts, case_nan_ply],
     "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
-                        case_sphere_contour_passes],
+                        case_sphere_contour_passes, case_no_overlap],
 }
 
 
