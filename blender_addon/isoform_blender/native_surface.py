@@ -17,10 +17,12 @@ PATCH_BLENDS = {"printed": 0, "squared": 1}
 
 
 def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point=None,
-                   on_surface=None):
+                   on_surface=None, prevent_overlap=None):
     """on_surface: keep each new point on its fitted surface (the seed's point)
     instead of the least-squares best place; for the side-vertex surface,
-    which interpolates the vertices."""
+    which interpolates the vertices. prevent_overlap: refuse a removal whose
+    new triangles would cross the rest of the mesh (slower; for thin walls
+    and close sheets)."""
     lib = native.library()
     options = structs.ReduceOptions()
     lib.reduce_options_default(ctypes.byref(options))
@@ -34,6 +36,8 @@ def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point
         options.point_method = native._choice(REDUCE_POINTS, point, "replacement point")
     if on_surface is not None:
         options.refine_point = 0 if on_surface else 1
+    if prevent_overlap is not None:
+        options.prevent_overlap = 1 if prevent_overlap else 0
     return options
 
 

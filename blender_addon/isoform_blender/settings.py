@@ -119,17 +119,23 @@ class ReduceSettings(SharedSettings):
                                          "reduced surface, in world units")
     lock_boundary: BoolProperty(name="Lock Boundary", default=False, options={'SKIP_SAVE'},
                                 description="Keep every boundary vertex (open meshes)")
+    prevent_overlap: BoolProperty(name="No Overlap", default=False, options={'SKIP_SAVE'},
+                                  description="Refuse a removal whose new triangles would cross "
+                                              "the rest of the mesh (slower; for thin walls and "
+                                              "close sheets)")
     reduce_point: EnumProperty(name="Point", items=_REDUCE_POINTS, default="quadratic",
                                options={'SKIP_SAVE'},
                                description="How the point replacing a triangle is made")
 
-    _SHARED = ("keep_percent", "use_tolerance", "tolerance", "lock_boundary", "reduce_point")
+    _SHARED = ("keep_percent", "use_tolerance", "tolerance", "lock_boundary", "prevent_overlap",
+               "reduce_point")
 
     def reduce_arguments(self):
         """Keyword arguments of native_surface.reduce (plain values)."""
         return {"keep_fraction": self.keep_percent / 100.0,
                 "tolerance": self.tolerance if self.use_tolerance else 0.0,
-                "lock_boundary": self.lock_boundary, "point": self.reduce_point}
+                "lock_boundary": self.lock_boundary, "point": self.reduce_point,
+                "prevent_overlap": self.prevent_overlap}
 
     def draw_reduce_settings(self, layout):
         layout.prop(self, "keep_percent")
@@ -139,6 +145,7 @@ class ReduceSettings(SharedSettings):
         sub.enabled = self.use_tolerance
         sub.prop(self, "tolerance", text="")
         layout.prop(self, "lock_boundary")
+        layout.prop(self, "prevent_overlap")
         layout.prop(self, "reduce_point")
 
 

@@ -110,6 +110,34 @@ def case_reduce_errors_leave_the_mesh():
     R.expect(len(obj.data.polygons) == 3, "the non-manifold mesh was changed")
 
 
+def case_reduce_no_overlap():
+    """No Overlap on a thin torus shell reduced to 2%: the operator gives the
+    library's guarded reduction, whose sheets do not cross (the library
+    reduces it again); without it they do."""
+    from isoform_blender import mesh_build, native, native_surface
+    from thin_shell import thin_shell
+    points, shell_triangles = thin_shell()
+    results = {}
+    for guard in (False, True):
+        mesh = bpy.data.meshes.new("isoform shell")
+        mesh.from_pydata(points.tolist(), [], shell_triangles.tolist())
+        obj = bpy.data.objects.new("isoform shell", mesh)
+        bpy.context.collection.objects.link(obj)
+        bpy.context.view_layer.objects.active = obj
+        result = bpy.ops.object.isoform_reduce(keep_percent=2.0, prevent_overlap=guard)
+        R.expect(result == {'FINISHED'}, f"operator returned {result}")
+        expect_closed_manifold(obj)
+        world, triangles, _ = mesh_build.world_triangles(obj)
+        with native.Mesh.from_arrays_f64(world, triangles) as again:
+            try:
+                native_surface.reduce(again, keep_fraction=0.5)
+                results[guard] = "reduced again"
+            except native.IsoformError as error:
+                results[guard] = str(error)
+    R.expect("overlaps itself" in results[False], f"unguarded: {results[False]}")
+    R.expect(results[True] == "reduced again", f"No Overlap: {results[True]}")
+
+
 # ---------------------------------------------------------------- smooth surface
 
 def case_smooth_surface_beside_the_mesh():
@@ -182,6 +210,6 @@ def cases(runner):
     global R
     R = runner
     return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_matches_library,
-            case_reduce_errors_leave_the_mesh, case_smooth_surface_beside_the_mesh,
+            case_reduce_errors_leave_the_mesh, case_reduce_no_overlap, case_smooth_surface_beside_the_mesh,
             case_smooth_surface_follows_level_and_blend,
             case_compare_adds_the_loop_object_and_stores_metrics]

@@ -17,6 +17,7 @@ import numpy as np
 import test_native as base
 from test_native import expect, expect_raises
 from test_native_visual import sphere_volume
+from thin_shell import thin_shell
 from isoform_blender import native, native_surface as surface
 
 
@@ -74,6 +75,25 @@ def case_reduce_errors():
     with native.Mesh.from_arrays(fin, [[0, 1, 2], [1, 0, 3], [0, 1, 4]]) as mesh:
         expect_raises(native.IsoformError, lambda: surface.reduce(mesh), "edge")
         expect(mesh.triangle_count == 3, "the non-manifold mesh was changed")
+
+
+def case_reduce_prevent_overlap():
+    """A thin torus shell reduced to 2%: unguarded, its sheets cross (reducing
+    the result again is refused); with prevent_overlap they do not (it reduces
+    again), the guard refused removals, and the shell stays two closed parts."""
+    points, triangles = thin_shell()
+    with native.Mesh.from_arrays_f64(points, triangles) as mesh:
+        stats = surface.reduce(mesh, keep_fraction=0.02)
+        expect(stats.refused_overlap == 0, f"the guard ran unasked: {stats}")
+        expect_raises(native.IsoformError, lambda: surface.reduce(mesh, keep_fraction=0.5),
+                      "overlaps itself")
+    with native.Mesh.from_arrays_f64(points, triangles) as mesh:
+        stats = surface.reduce(mesh, keep_fraction=0.02, prevent_overlap=True)
+        expect(stats.refused_overlap > 0 and stats.removals > 1000, f"stats {stats}")
+        surface.reduce(mesh, keep_fraction=0.5)
+        after = mesh.stats()
+        expect(after.boundary_edges == 0 and after.nonmanifold_edges == 0 and after.parts == 2 and
+               after.euler_characteristic == 0, f"mesh stats {after}")
 
 
 # ---------------------------------------------------------------- patch
@@ -142,7 +162,7 @@ def case_compare_loop_against_side_vertex():
 
 GROUPS = {
     "reduce": [case_reduce_keeps_the_fraction_and_the_topology, case_reduce_matches_cli,
-               case_reduce_errors],
+               case_reduce_errors, case_reduce_prevent_overlap],
     "patch": [case_patch_interpolates_and_tessellates, case_patch_errors_name_the_sample,
               case_compare_loop_against_side_vertex],
 }
