@@ -757,7 +757,9 @@ typedef struct isoform_reduce_options {
                             boundary vertex stays (Remark 5.8); default 0 */
   int point_method;      /* isoform_reduce_point; default ISOFORM_REDUCE_POINT_QUADRATIC */
   int graph;             /* 1: the mesh is a graph z = f(x, y); its (x, y) domain stays
-                            covered (boundary points stay on straight boundary lines);
+                            covered (boundary points stay on straight boundary lines).
+                            Every triangle must turn counterclockwise seen from +z (else
+                            ISOFORM_ERR_INVALID_ARGUMENT names the first that does not);
                             default 0 */
   double graph_rms_tolerance; /* graph only, world units: stop before the RMS height error at
                             the original vertices (5.41) exceeds it (Remark 5.10); 0 = off */

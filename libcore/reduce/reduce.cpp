@@ -26,6 +26,7 @@
 #include "../curvature/surface_curvature.h"
 #include "../errors.h"
 #include "../mesh_normals.h"
+#include "graph_embedding.h"
 #include "manifold_parts.h"
 #include "queue.h"
 #include "removal.h"
@@ -65,7 +66,9 @@ void check_options(const ReduceOptions& o) {
 // check's error is thrown when the reduction is done or fails.
 class OverlapCheck {
  public:
-  explicit OverlapCheck(const Mesh& mesh) {
+  OverlapCheck() = default;
+  // Starts the check (once).
+  void start(const Mesh& mesh) {
     group_.run([this, &mesh] {
       try {
         reduce::validate_no_overlap(mesh, "reduce");
@@ -292,23 +295,35 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   stats.vertices_before = stats.vertices_after = (long long)mesh.vertex_count();
   if (options.keep_fraction >= 1.0 || mesh.triangle_count() == 0) {
     reduce::validate_input(mesh, "reduce");
+    if (options.graph) reduce::validate_graph(mesh, "reduce");
     return stats;  // an unchanged copy
   }
   // The manifold checks' error first, else the overlap check's, else any other.
   reduce::validate_indices(mesh, "reduce");
-  OverlapCheck overlap(mesh);
+  // A graph (every triangle counterclockwise seen from +z) whose (x, y)
+  // projection is proved one-to-one cannot overlap itself
+  // (graph_embedding.h); the proof reads the star table, so the general
+  // check of a graph starts only when the proof fails.
+  OverlapCheck overlap;
+  if (!options.graph) overlap.start(mesh);
   VertexStars stars;
   WorkMesh w;
   CurvatureStats curvature_stats;
+  bool one_to_one = false;
   try {
     tbb::this_task_arena::isolate([&] {
       stars = vertex_stars(mesh);
       reduce::validate_manifold(mesh, stars, "reduce");
+      if (options.graph) {
+        reduce::validate_graph(mesh, "reduce");
+        one_to_one = reduce::projects_one_to_one(mesh, stars);
+      }
     });
   } catch (...) {
     overlap.wait();  // (the check reads the mesh)
     throw;
   }
+  if (options.graph && !one_to_one) overlap.start(mesh);
   try {
     tbb::this_task_arena::isolate([&] {
       w = prepared_work_mesh(mesh, stars, progress, &stats.curvature_computed, &curvature_stats);
