@@ -33,6 +33,7 @@ void run_reduce(ReduceArgs& args) {
   if (args.json) {
     Json j = {{"input", args.input}, {"output", args.output}, {"point", args.settings.point}};
     j.update(reduce_json(mesh.get(), seconds));
+    if (args.settings.graph) j["graph_rms"] = graph_rms(mesh.get());
     j["parts"] = isoform_mesh_part_count(mesh.get());
     j["write_seconds"] = write_seconds;
     print_json(j);
@@ -40,6 +41,7 @@ void run_reduce(ReduceArgs& args) {
   }
   std::cout << args.input << ": reduced with the " << args.settings.point << " point\n";
   print_reduce(std::cout, mesh.get(), seconds);
+  if (args.settings.graph) print_row(std::cout, "RMS height error", format_number(graph_rms(mesh.get())));
   std::cout << "wrote " << args.output << '\n';
 }
 
@@ -77,6 +79,16 @@ Command add_reduce_command(CLI::App& parent) {
                 "Instead of failing on bad input, reduce only the parts (triangles joined by edges) that "
                 "pass every check and copy the others unchanged; --keep then counts the reduced parts' "
                 "triangles. The summary says which parts were left alone and why");
+  CLI::Option* graph = app->add_flag(
+      "--graph", args->settings.graph,
+      "The mesh is a height field z = f(x, y) (a terrain, the graph of a function, every triangle "
+      "counterclockwise seen from +z): its (x, y) domain stays covered, new points move vertically, "
+      "and the RMS height error at the original vertices is reported (Table 5.1)");
+  app->add_option("--rms-tolerance", args->settings.rms_tolerance,
+                  "With --graph: stop before the RMS height error at the original vertices exceeds this, "
+                  "in world units (Remark 5.10; default 0: off)")
+      ->check(CLI::NonNegativeNumber)
+      ->needs(graph);
   app->add_flag("--no-overlap", args->settings.prevent_overlap,
                 "Refuse every removal whose new triangles would cross another triangle, so that the "
                 "result does not overlap itself where two sheets lie close (thin bone) and can be "

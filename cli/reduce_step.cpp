@@ -58,6 +58,8 @@ double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& s, const std::strin
   o.measure_error = 1;
   o.manifold_parts_only = s.manifold_parts ? 1 : 0;
   o.prevent_overlap = s.prevent_overlap ? 1 : 0;
+  o.graph = s.graph ? 1 : 0;
+  o.graph_rms_tolerance = s.rms_tolerance;
   const auto start = std::chrono::steady_clock::now();
   try {
     run_with_progress([&](isoform_progress* p) { return isoform_reduce(mesh, &o, p); }, progress);
@@ -95,6 +97,8 @@ Json reduce_json(const isoform_mesh* mesh, double seconds) {
               {"left_alone", left_alone(mesh, s)},
               {"reduce_seconds", seconds}};
 }
+
+double graph_rms(const isoform_mesh* mesh) { return stats_of(mesh).graph_rms; }
 
 void print_reduce(std::ostream& out, const isoform_mesh* mesh, double seconds) {
   const isoform_reduce_stats s = stats_of(mesh);

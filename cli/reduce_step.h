@@ -19,6 +19,8 @@ struct ReduceSettings {
   bool refine_point = true;          // false: the seed's point on the fitted surface
   bool manifold_parts = false;       // reduce the parts that pass the checks, copy the others
   bool prevent_overlap = false;      // refuse removals whose triangles would cross others
+  bool graph = false;                // a height field z = f(x, y) (Table 5.1's graph mode)
+  double rms_tolerance = 0.0;        // graph: stop before the RMS height error exceeds it (0: off)
 };
 
 // "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.
@@ -31,6 +33,8 @@ double reduce_mesh(isoform_mesh* mesh, const ReduceSettings& settings, const std
                    const ProgressOptions& progress);
 
 Json reduce_json(const isoform_mesh* mesh, double seconds);
+// The RMS height error at the original vertices of a graph-mode reduction.
+double graph_rms(const isoform_mesh* mesh);
 void print_reduce(std::ostream& out, const isoform_mesh* mesh, double seconds);
 
 }  // namespace isoform::cli

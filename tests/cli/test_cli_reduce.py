@@ -78,8 +78,8 @@ def expect_refused(tmp, args, path, message, inputs):
 
 def case_help(tmp):
     proc = run("reduce", "--help")
-    for option in ("--keep", "--tolerance", "--lock-boundary", "--point", "--no-overlap", "--json", "--progress",
-                   "--quiet"):
+    for option in ("--keep", "--tolerance", "--lock-boundary", "--point", "--no-overlap", "--graph",
+                   "--rms-tolerance", "--json", "--progress", "--quiet"):
         expect(option in proc.stdout, f"reduce --help does not mention {option}")
     expect("--reduce" in run("contour", "--help").stdout, "contour --help does not mention --reduce")
 
@@ -272,9 +272,72 @@ def case_no_overlap(tmp):
         expect(euler(points, faces) == chi, f"{path}: Euler characteristic {euler(points, faces)}, the contour's {chi}")
 
 
+def knot_rms(points, faces, reduced_points, reduced):
+    """RMS, over the original vertices, of their height above the reduced graph (its triangle holding
+    (x, y), linear): (5.41), computed here apart from the library."""
+    total = 0.0
+    for x, y, z in points:
+        best, best_z = -1.0, None
+        for f in reduced:
+            (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = (reduced_points[v] for v in f)
+            det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+            l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / det
+            l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / det
+            inside = min(1 - l1 - l2, l1, l2)
+            if inside > best:
+                best, best_z = inside, (1 - l1 - l2) * z0 + l1 * z1 + l2 * z2
+        expect(best > -1e-6, f"({x}, {y}) lies outside the reduced graph's domain")
+        total += (z - best_z) ** 2
+    return (total / len(points)) ** 0.5
+
+
+def projected_area(points, faces):
+    """The signed (x, y) areas of the triangles: their sum, and the smallest."""
+    areas = []
+    for f in faces:
+        (x0, y0, _), (x1, y1, _), (x2, y2, _) = (points[v] for v in f)
+        areas.append(0.5 * ((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)))
+    return sum(areas), min(areas)
+
+
+def case_graph(tmp):
+    """--graph: the paraboloid over [-1, 1]^2 keeps its square domain, covered once, and reports the
+    RMS height error at the original vertices as computed apart; --rms-tolerance stops before it;
+    a graph turned over is refused by its first triangle."""
+    mesh = os.path.join(tmp, "grid.obj")
+    write_grid_obj(mesh, 41)
+    points, _, faces = base.read_obj(mesh)
+    out = os.path.join(tmp, "g10.obj")
+    summary, _ = run_json("reduce", mesh, "--graph", "--keep", "10%", "-o", out)
+    rp, _, rf = base.read_obj(out)
+    expect(len(rf) == summary["triangles_after"] and len(rf) <= 320, f"{len(rf)} triangles, {summary}")
+    area, smallest = projected_area(rp, rf)
+    expect(abs(area - 4) < 1e-6 and smallest > 0, f"projected area {area}, smallest triangle {smallest}")
+    rms = knot_rms(points, faces, rp, rf)
+    expect(summary["graph_rms"] > 0 and abs(rms - summary["graph_rms"]) <= 1e-5 * rms,
+           f"RMS height error {summary['graph_rms']}, computed apart {rms}")
+    text = run("reduce", mesh, "--graph", "--keep", "10%", "-o", os.path.join(tmp, "text.obj")).stdout
+    expect("RMS height error" in text, f"no RMS line in {text!r}")
+    # Remark 5.10: stop before the RMS error exceeds half of what 10 % gave.
+    limit = summary["graph_rms"] / 2
+    bounded, _ = run_json("reduce", mesh, "--graph", "--keep", "10%", "--rms-tolerance", repr(limit), "-o", out)
+    bp, _, bf = base.read_obj(out)
+    expect(bounded["stop"] == "RMS tolerance reached" and len(bf) > 320, f"{bounded}")
+    expect(bounded["graph_rms"] <= limit and knot_rms(points, faces, bp, bf) <= limit * (1 + 1e-5),
+           f"RMS {bounded['graph_rms']} over the tolerance {limit}")
+    proc = run("reduce", mesh, "--rms-tolerance", "0.1", "-o", out, code=2)
+    expect("--graph" in proc.stderr, f"--rms-tolerance without --graph: {proc.stderr!r}")
+    turned = os.path.join(tmp, "turned.obj")
+    write_obj(turned, points, [(a, c, b) for a, b, c in faces])
+    os.remove(out)
+    expect_refused(tmp, ["reduce", turned, "--graph", "-o", out], turned,
+                   "not a graph z = f(x, y): triangle 0 (vertices 0, 42, 1) does not turn counterclockwise "
+                   "seen from +z", ["grid.obj", "turned.obj", "text.obj"])
+
+
 GROUPS = {
     "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
-                   case_overlap, case_manifold_parts, case_nan_ply],
+                   case_overlap, case_manifold_parts, case_nan_ply, case_graph],
     "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
                         case_sphere_contour_passes, case_no_overlap],
 }
