@@ -17,12 +17,14 @@ PATCH_BLENDS = {"printed": 0, "squared": 1}
 
 
 def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point=None,
-                   on_surface=None, prevent_overlap=None):
+                   on_surface=None, prevent_overlap=None, height_field=None):
     """on_surface: keep each new point on its fitted surface (the seed's point)
     instead of the least-squares best place; for the side-vertex surface,
     which interpolates the vertices. prevent_overlap: refuse a removal whose
     new triangles would cross the rest of the mesh (slower; for thin walls
-    and close sheets)."""
+    and close sheets). height_field: the mesh is a graph z = f(x, y), every
+    triangle counterclockwise seen from +z (the library's graph mode; the
+    stats' graph_rms is the RMS height error at the original vertices)."""
     lib = native.library()
     options = structs.ReduceOptions()
     lib.reduce_options_default(ctypes.byref(options))
@@ -38,6 +40,8 @@ def reduce_options(keep_fraction=None, tolerance=None, lock_boundary=None, point
         options.refine_point = 0 if on_surface else 1
     if prevent_overlap is not None:
         options.prevent_overlap = 1 if prevent_overlap else 0
+    if height_field is not None:
+        options.graph = 1 if height_field else 0
     return options
 
 

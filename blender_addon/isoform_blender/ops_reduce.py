@@ -42,7 +42,7 @@ class OBJECT_OT_isoform_reduce(bpy.types.Operator, ReduceSettings, MeshJobOperat
         if obj is None or obj.type != 'MESH':
             raise UserError(f"{self._object_name}: the object went away while it was reduced")
         mesh_build.replace_geometry(obj, mesh_build.to_object_space(arrays, self._matrix))
-        self.report({'INFO'}, summary(self._object_name, stats))
+        self.report({'INFO'}, summary(self._object_name, stats, self.height_field))
 
 
 def _reduce(points, triangles, arguments, progress):
@@ -53,9 +53,12 @@ def _reduce(points, triangles, arguments, progress):
         return mesh.arrays(), stats
 
 
-def summary(name, stats):
+def summary(name, stats, height_field=False):
     reason = (_STOP_REASONS[stats.stop_reason] if 0 <= stats.stop_reason < len(_STOP_REASONS)
               else "?")
-    return (f"{name}: {stats.triangles_before} -> {stats.triangles_after} triangles, "
+    text = (f"{name}: {stats.triangles_before} -> {stats.triangles_after} triangles, "
             f"{stats.vertices_before} -> {stats.vertices_after} vertices in {stats.passes} "
             f"passes; {reason}")
+    if height_field:
+        text += f"; RMS height error {stats.graph_rms:.4g}"
+    return text

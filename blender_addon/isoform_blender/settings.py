@@ -123,19 +123,24 @@ class ReduceSettings(SharedSettings):
                                   description="Refuse a removal whose new triangles would cross "
                                               "the rest of the mesh (slower; for thin walls and "
                                               "close sheets)")
+    height_field: BoolProperty(name="Height Field", default=False, options={'SKIP_SAVE'},
+                               description="The mesh is a height field z = f(x, y) in world "
+                                           "space (a terrain; every face counterclockwise "
+                                           "seen from above): its (x, y) outline stays "
+                                           "covered and new points move vertically")
     reduce_point: EnumProperty(name="Point", items=_REDUCE_POINTS, default="quadratic",
                                options={'SKIP_SAVE'},
                                description="How the point replacing a triangle is made")
 
     _SHARED = ("keep_percent", "use_tolerance", "tolerance", "lock_boundary", "prevent_overlap",
-               "reduce_point")
+               "height_field", "reduce_point")
 
     def reduce_arguments(self):
         """Keyword arguments of native_surface.reduce (plain values)."""
         return {"keep_fraction": self.keep_percent / 100.0,
                 "tolerance": self.tolerance if self.use_tolerance else 0.0,
                 "lock_boundary": self.lock_boundary, "point": self.reduce_point,
-                "prevent_overlap": self.prevent_overlap}
+                "prevent_overlap": self.prevent_overlap, "height_field": self.height_field}
 
     def draw_reduce_settings(self, layout):
         layout.prop(self, "keep_percent")
@@ -146,6 +151,7 @@ class ReduceSettings(SharedSettings):
         sub.prop(self, "tolerance", text="")
         layout.prop(self, "lock_boundary")
         layout.prop(self, "prevent_overlap")
+        layout.prop(self, "height_field")
         layout.prop(self, "reduce_point")
 
 

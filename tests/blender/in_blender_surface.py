@@ -22,6 +22,16 @@ def new_ico_sphere(radius, subdivisions, scale):
     return obj
 
 
+def new_mesh_object(name, points, triangles):
+    """A mesh object of these triangles, linked and active."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(points.tolist(), [], triangles.tolist())
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    return obj
+
+
 def world_points(obj):
     points = np.empty(len(obj.data.vertices) * 3, dtype=np.float32)
     obj.data.vertices.foreach_get("co", points)
@@ -119,11 +129,7 @@ def case_reduce_no_overlap():
     points, shell_triangles = thin_shell()
     results = {}
     for guard in (False, True):
-        mesh = bpy.data.meshes.new("isoform shell")
-        mesh.from_pydata(points.tolist(), [], shell_triangles.tolist())
-        obj = bpy.data.objects.new("isoform shell", mesh)
-        bpy.context.collection.objects.link(obj)
-        bpy.context.view_layer.objects.active = obj
+        obj = new_mesh_object("isoform shell", points, shell_triangles)
         result = bpy.ops.object.isoform_reduce(keep_percent=2.0, prevent_overlap=guard)
         R.expect(result == {'FINISHED'}, f"operator returned {result}")
         expect_closed_manifold(obj)
@@ -136,6 +142,26 @@ def case_reduce_no_overlap():
                 results[guard] = str(error)
     R.expect("overlaps itself" in results[False], f"unguarded: {results[False]}")
     R.expect(results[True] == "reduced again", f"No Overlap: {results[True]}")
+
+
+def case_reduce_height_field():
+    """Height Field on the paraboloid over [-1, 1]^2 reduced to 10%: the
+    operator gives the library's graph reduction (the square stays covered
+    once); the same object turned upside down is refused, the mesh as it was."""
+    from height_field import paraboloid_grid, projected_areas
+    points, triangles = paraboloid_grid(41)
+    obj = new_mesh_object("isoform terrain", points, triangles)
+    result = bpy.ops.object.isoform_reduce(keep_percent=10.0, height_field=True)
+    R.expect(result == {'FINISHED'}, f"operator returned {result}")
+    areas = projected_areas(world_points(obj), triangles_of(obj))
+    R.expect(len(areas) <= 320 and areas.min() > 0 and abs(areas.sum() - 4) < 1e-5,
+             f"{len(areas)} triangles, smallest area {areas.min()}, sum {areas.sum()}")
+    obj.rotation_euler = (np.pi, 0.0, 0.0)  # seen from above, every face now turns clockwise
+    bpy.context.view_layer.update()
+    count = len(obj.data.polygons)
+    R.expect_operator_error(bpy.ops.object.isoform_reduce, ["not a graph"], keep_percent=50.0,
+                            height_field=True)
+    R.expect(len(obj.data.polygons) == count, "the refused mesh was changed")
 
 
 # ---------------------------------------------------------------- smooth surface
@@ -210,6 +236,7 @@ def cases(runner):
     global R
     R = runner
     return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_matches_library,
-            case_reduce_errors_leave_the_mesh, case_reduce_no_overlap, case_smooth_surface_beside_the_mesh,
+            case_reduce_errors_leave_the_mesh, case_reduce_no_overlap, case_reduce_height_field,
+            case_smooth_surface_beside_the_mesh,
             case_smooth_surface_follows_level_and_blend,
             case_compare_adds_the_loop_object_and_stores_metrics]

@@ -18,6 +18,7 @@ import test_native as base
 from test_native import expect, expect_raises
 from test_native_visual import sphere_volume
 from thin_shell import thin_shell
+from height_field import paraboloid_grid, projected_areas
 from isoform_blender import native, native_surface as surface
 
 
@@ -96,6 +97,24 @@ def case_reduce_prevent_overlap():
                after.euler_characteristic == 0, f"mesh stats {after}")
 
 
+def case_reduce_height_field():
+    """height_field on the paraboloid over [-1, 1]^2 reduced to 10%: the
+    square stays covered once (every triangle counterclockwise, areas summing
+    to 4), the RMS height error is reported; turned over, the mesh is refused
+    by its first triangle and left as it was."""
+    points, triangles = paraboloid_grid(41)
+    with native.Mesh.from_arrays_f64(points, triangles) as mesh:
+        stats = surface.reduce(mesh, keep_fraction=0.1, height_field=True)
+        areas = projected_areas(mesh.points(), mesh.triangles())
+        expect(mesh.triangle_count <= 320 and areas.min() > 0 and abs(areas.sum() - 4) < 1e-5,
+               f"{mesh.triangle_count} triangles, smallest area {areas.min()}, sum {areas.sum()}")
+        expect(0 < stats.graph_rms < 0.01, f"RMS height error {stats.graph_rms}")
+    with native.Mesh.from_arrays_f64(points, triangles[:, [0, 2, 1]]) as mesh:
+        expect_raises(native.IsoformError, lambda: surface.reduce(mesh, height_field=True),
+                      "not a graph z = f(x, y): triangle 0 ")
+        expect(mesh.triangle_count == len(triangles), "the refused mesh was changed")
+
+
 # ---------------------------------------------------------------- patch
 
 def case_patch_interpolates_and_tessellates():
@@ -162,7 +181,8 @@ def case_compare_loop_against_side_vertex():
 
 GROUPS = {
     "reduce": [case_reduce_keeps_the_fraction_and_the_topology, case_reduce_matches_cli,
-               case_reduce_errors, case_reduce_prevent_overlap],
+               case_reduce_errors, case_reduce_prevent_overlap,
+               case_reduce_height_field],
     "patch": [case_patch_interpolates_and_tessellates, case_patch_errors_name_the_sample,
               case_compare_loop_against_side_vertex],
 }
