@@ -37,13 +37,15 @@ struct Projection {
 
 // The sign of the turn a -> b -> c: +1 counterclockwise, -1 clockwise, 0
 // when the floating-point determinant is within its error bound (Shewchuk's
-// first orientation bound), or too small for the bound to hold, or NaN.
+// first orientation bound), or NaN, or its products are too small (below
+// 1e-300, where the bound no longer holds) or overflow: coordinate
+// differences between about 1e-150 and 1e150 are decided.
 int turn(const XY& a, const XY& b, const XY& c) {
   const double left = (a.x - c.x) * (b.y - c.y);
   const double right = (a.y - c.y) * (b.x - c.x);
   const double det = left - right;
   const double sum = std::fabs(left) + std::fabs(right);
-  if (!(sum > 1e-280)) return 0;
+  if (!(sum > 1e-300)) return 0;
   const double bound = 3.3306690738754716e-16 * sum;
   if (det > bound) return 1;
   if (-det > bound) return -1;

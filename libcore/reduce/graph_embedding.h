@@ -26,7 +26,9 @@ namespace isoform::reduce {
 
 // Throws InvalidArgument "<what>: ..." naming the first triangle whose
 // projection is not certainly counterclockwise (clockwise, or vertical
-// within rounding). Every index must name a vertex (validate_indices).
+// within rounding; edges shorter than about 1e-150 or longer than 1e150
+// cannot be decided and are refused too). Every index must name a vertex
+// (validate_indices).
 void validate_graph(const Mesh& mesh, const std::string& what);
 
 // True when the boundary is one loop whose projection is a simple polygon,

@@ -130,6 +130,41 @@ TEST(GraphEmbedding, AFoldedOrVerticalTriangleIsRefused) {
   EXPECT_EQ(graph_error(m), "");
 }
 
+TEST(GraphEmbedding, ThePreciseCoordinatesAreTheOnesJudged) {
+  // Float points of a C-shaped strip, precise points of one that overlaps
+  // itself in the plane: both checks read the precise ones.
+  Mesh m = strip(0.9, 60, 0.0);
+  const Mesh over = strip(1.25, 60, 0.0);
+  m.precise_points.assign(over.points.begin(), over.points.end());
+  EXPECT_FALSE(proved(m));
+  EXPECT_FALSE(find_overlaps(m).empty());
+  m.precise_points.clear();
+  EXPECT_TRUE(proved(m));
+}
+
+TEST(GraphEmbedding, AFoldBelowRoundingIsProvedThoughTheGeneralCheckRefusesIt) {
+  // Two near-vertical slivers on the edge (0, 0, 0)-(0, 1, 0), their tips
+  // 2e-15 apart in x: both certainly counterclockwise seen from +z, one
+  // simple boundary loop, so no overlap, exactly. The general check calls
+  // triangles sharing an edge coplanar within a rounding tolerance and then
+  // sees a fold: it is stricter here (docs/reduce.md, "Graph inputs").
+  Mesh m;
+  m.precise_points = {0, 0, 0, 0, 1, 0, -1e-15, 0.5, 1, 1e-15, 0.5, 1};
+  m.points.assign(m.precise_points.begin(), m.precise_points.end());
+  m.triangles = {0, 1, 2, 1, 0, 3};
+  EXPECT_TRUE(proved(m));
+  EXPECT_FALSE(find_overlaps(m).empty());
+}
+
+TEST(GraphEmbedding, EdgesBeyondTheDecidableScaleAreRefused) {
+  Mesh m = plane_grid(4);
+  for (double scale : {1e-100, 1e-160}) {
+    m.precise_points.assign(m.points.begin(), m.points.end());
+    for (double& c : m.precise_points) c *= scale;
+    EXPECT_EQ(graph_error(m).empty(), scale > 1e-150) << scale << ": " << graph_error(m);
+  }
+}
+
 TEST(GraphEmbedding, TwoPatchesOrAClosedSurfaceAreNotProved) {
   Mesh two = plane_grid(6);
   const Mesh other = plane_grid(6);
