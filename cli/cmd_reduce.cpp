@@ -57,7 +57,7 @@ Command add_reduce_command(CLI::App& parent) {
       "--keep of the triangles remain or --tolerance would be exceeded. Curvature is computed "
       "first when the file has none (the cubic fit; run isoform curvature first for another). The mesh must be manifold, consistently oriented, with "
       "finite coordinates and not overlap itself (else the first offender is named), unless "
-      "--manifold-parts. "
+      "--manifold-parts; with --graph every triangle must turn counterclockwise seen from +z. "
       "Example: isoform reduce skull.ply --keep 10% -o small.ply");
   app->add_option("file", args->input, "Mesh file (.ply, .obj, .stl)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")->required();

@@ -208,8 +208,7 @@ void group_by_cell(Entry* first, Entry* last, std::vector<Entry>& scratch) {
 // side, each with its own counts per bucket; a bucket then holds the first
 // stretch's entries, then the second's, and so on: the order of one pass over
 // all triangles.
-Buckets grid_entries(const BigVector<Box>& boxes, const Grid& g) {
-  const BigVector<CellRange> ranges = cell_ranges(boxes, g);
+Buckets grid_entries(const BigVector<CellRange>& ranges) {
   size_t n = 0;
   for (const CellRange& r : ranges) n += r.count();
   const BucketMap bucket = bucket_map(ranges, n);
@@ -272,13 +271,79 @@ struct BucketScratch {
   std::vector<OverlapPair> found;
 };
 
+LocalTriangle local_triangle(const Mesh& mesh, const Corners& corners, const BigVector<Box>& boxes, size_t id) {
+  LocalTriangle t;
+  corners.of(id, t.p);
+  t.n = triangle_normal(t.p);
+  t.box = boxes[id];
+  t.extent = extent(t.box);
+  for (int c = 0; c < 3; ++c) t.v[c] = mesh.triangles[3 * id + size_t(c)];
+  return t;
+}
+
+// The full test of a pair whose boxes meet.
+PairOverlap test_pair(const LocalTriangle& ta, const LocalTriangle& tb) {
+  // Boxes that meet lie in a box whose sides are at most the sums of
+  // theirs (the float boxes hold the triangles).
+  if (certainly_apart(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v, ta.extent + tb.extent)) return {};
+  return triangles_overlap(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v);
+}
+
+// NOTE: a triangle much larger than the cells (a ground quad under a
+// detailed model) would fill millions of cells: a tilted 60 x 60 quad beside
+// a 20,000-triangle sphere of radius 1 took 5.9 GB and 17 s. A triangle whose
+// box covers more cells than the triangles number over 32 (and over 512) is
+// left out of the grid and tested against every triangle's box instead: n
+// box tests rather than more than n / 32 entries, each written, sorted and
+// compared.
+std::vector<int32_t> take_oversized(BigVector<CellRange>& ranges) {
+  const size_t limit = std::max<size_t>(512, ranges.size() / 32);
+  std::vector<int32_t> oversized;
+  for (size_t t = 0; t < ranges.size(); ++t)
+    if (ranges[t].count() > limit) {
+      oversized.push_back(int32_t(t));
+      ranges[t] = CellRange{};
+    }
+  return oversized;
+}
+
+// The pairs with an oversized triangle, each once, a < b.
+std::vector<OverlapPair> oversized_pairs(const Mesh& mesh, const Corners& corners, const BigVector<Box>& boxes,
+                                         const std::vector<int32_t>& oversized) {
+  std::vector<LocalTriangle> big;
+  for (int32_t b : oversized) big.push_back(local_triangle(mesh, corners, boxes, size_t(b)));
+  tbb::enumerable_thread_specific<std::vector<OverlapPair>> found;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size()), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<OverlapPair>& out = found.local();
+    for (size_t t = r.begin(); t != r.end(); ++t) {
+      if (!boxes[t].valid) continue;
+      // An oversized t meets the oversized ones after it only (each pair once).
+      const auto self = std::lower_bound(oversized.begin(), oversized.end(), int32_t(t));
+      const bool is_big = self != oversized.end() && *self == int32_t(t);
+      const size_t from = is_big ? size_t(self - oversized.begin()) + 1 : 0;
+      for (size_t k = from; k < big.size(); ++k) {
+        if (!big[k].box.valid || !boxes_meet(boxes[t], big[k].box)) continue;
+        const LocalTriangle mine = local_triangle(mesh, corners, boxes, t);
+        const PairOverlap o = test_pair(mine, big[k]);
+        const int32_t a = int32_t(t), b = oversized[k];
+        if (o.overlap) out.push_back({std::min(a, b), std::max(a, b), o.near});
+      }
+    }
+  });
+  std::vector<OverlapPair> all;
+  for (auto& part : found) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
 }  // namespace
 
 std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
   const Corners corners(mesh);
   const BigVector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
   const Grid grid = make_grid(boxes);
-  Buckets buckets = grid_entries(boxes, grid);
+  BigVector<CellRange> ranges = cell_ranges(boxes, grid);
+  const std::vector<int32_t> oversized = take_oversized(ranges);
+  Buckets buckets = grid_entries(ranges);
   tbb::enumerable_thread_specific<BucketScratch> scratch;
   // The pairs of one cell [e, e + count): each pair whose common box starts
   // in this cell.
@@ -289,10 +354,7 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
         const LocalTriangle& ta = b.local[size_t(e[p].first >> 3)];
         const LocalTriangle& tb = b.local[size_t(e[q].first >> 3)];
         if (!boxes_meet(ta.box, tb.box)) continue;
-        // Boxes that meet lie in a box whose sides are at most the sums of
-        // theirs (the float boxes hold the triangles).
-        if (certainly_apart(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v, ta.extent + tb.extent)) continue;
-        const PairOverlap o = triangles_overlap(ta.p, ta.n, ta.v, tb.p, tb.n, tb.v);
+        const PairOverlap o = test_pair(ta, tb);
         if (o.overlap) b.found.push_back({e[p].triangle, e[q].triangle, o.near});  // a < b: sorted
       }
   };
@@ -312,15 +374,7 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
         i->first |= uint32_t(b.ids.size() - 1) << 3;
       }
       b.local.resize(b.ids.size());
-      for (size_t i = 0; i < b.ids.size(); ++i) {
-        LocalTriangle& t = b.local[i];
-        const size_t id = size_t(b.ids[i]);
-        corners.of(id, t.p);
-        t.n = triangle_normal(t.p);
-        t.box = boxes[id];
-        t.extent = extent(t.box);
-        for (int c = 0; c < 3; ++c) t.v[c] = mesh.triangles[3 * id + size_t(c)];
-      }
+      for (size_t i = 0; i < b.ids.size(); ++i) b.local[i] = local_triangle(mesh, corners, boxes, size_t(b.ids[i]));
       // Equal cells together, each in triangle order: in a dense map a
       // bucket is one block, ordered by the cell within it (a stable
       // counting sort); else sorted by (cell, triangle).
@@ -336,7 +390,7 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
       }
     }
   });
-  std::vector<OverlapPair> all;
+  std::vector<OverlapPair> all = oversized_pairs(mesh, corners, boxes, oversized);
   for (auto& part : scratch) all.insert(all.end(), part.found.begin(), part.found.end());
   std::sort(all.begin(), all.end(),
             [](const OverlapPair& x, const OverlapPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });

@@ -3,6 +3,8 @@
 // uniform grid, hashed: each triangle's bounding box is entered in
 // the cells it covers (cell size the mean box size), and a pair whose boxes
 // overlap is tested once, in the cell of the low corner of their common box.
+// A triangle covering more cells than n / 32 (a ground quad under a detailed
+// model) stays out of the grid and is tested against every triangle's box.
 // About O(n) on surfaces whose triangles are of similar size; parallel (TBB).
 #pragma once
 

@@ -1,7 +1,8 @@
 // The self-overlap check of the reduction's input: the triangle pair test on
 // hand-made cases (crossing, contact, coplanar, shared vertex, shared edge,
 // fold), and the grid's pairs against all pairs on meshes that do and do not
-// overlap themselves, flat and tilted.
+// overlap themselves, flat and tilted, and with triangles far larger than
+// the rest among them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -235,6 +236,25 @@ TEST(MeshOverlap, TheGridFindsExactlyThePairsOfTheDirectTest) {
   const auto folded = all_pairs(fold);
   EXPECT_FALSE(folded.empty());
   EXPECT_EQ(grid_pairs(fold), folded);
+}
+
+TEST(MeshOverlap, OversizedTrianglesAreTestedAgainstEveryBox) {
+  // A torus of 384 triangles (cells about its triangles' size), a triangle
+  // 40 wide slicing through it (thousands of cells: kept out of the grid),
+  // and a second one upright through the first but clear of the torus.
+  Mesh m;
+  add_torus(m, 16, 12, 2, 0.5, {0, 0, 0});
+  const int32_t big = int32_t(m.vertex_count());
+  m.points.insert(m.points.end(), {-20, -20, 0.1f, 20, -20, 0.3f, 0, 20, -0.2f});
+  m.points.insert(m.points.end(), {-20, 5, -10, 20, 5, -10, 0, 5, 10});
+  m.triangles.insert(m.triangles.end(), {big, big + 1, big + 2, big + 3, big + 4, big + 5});
+  const auto direct = all_pairs(m);
+  EXPECT_EQ(grid_pairs(m), direct);
+  size_t slicing = 0;
+  for (const auto& p : direct) slicing += p.first < 384 && p.second == 384;
+  EXPECT_GT(slicing, 20u);
+  EXPECT_EQ(direct.count({384, 385}), 1u);
+  EXPECT_EQ(direct.size(), slicing + 1);  // nothing else crosses
 }
 
 TEST(MeshOverlap, TheReductionRefusesTheFirstPairByName) {
