@@ -209,7 +209,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
     const std::vector<reduce::QueueEntry>& order = *pass_order;
     for (size_t begin = 0; begin < order.size() && !stop && !reached; begin += kBatch) {
       const size_t end = std::min(order.size(), begin + kBatch);
-      const bool speculate = ahead_pays;
+      const bool speculate = ahead_pays && options.compute_ahead;
       if (speculate)
         ahead.propose(remover, w, order, begin, end, pass);
       else

@@ -45,6 +45,10 @@ struct ReduceOptions {
   // computed again in the next pass while that neighbourhood is unchanged
   // (speculate.h). Only time depends on it: off gives the same result.
   bool remember_refusals = true;
+  // Removals computed ahead of their turn, in batches on the crew's threads
+  // (speculate.h); off computes each at its turn against the mesh as it is.
+  // Only time depends on it: off gives the same result (the tests compare).
+  bool compute_ahead = true;
   // Beyond the seed: refuse a removal whose new triangles would cross a
   // triangle of the mesh outside its platelet (face_grid.h), so the result
   // does not overlap itself where two sheets of the input lie close. Off by
