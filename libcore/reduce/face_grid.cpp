@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "batch_crew.h"
-#include "batch_crew.h"
 #include "triangle_overlap.h"
 
 namespace isoform::reduce {
@@ -60,12 +59,12 @@ Box3f triangle_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
   return box;
 }
 
-FaceGrid::FaceGrid(const WorkMesh& w) : box_(w.tri.size()) { refit(w); }
+FaceGrid::FaceGrid(const WorkMesh& w, size_t big_cells) : box_(w.tri.size()), big_cells_(big_cells) { refit(w); }
 
 // NOTE: cells twice as wide as the faces' mean box: a face then meets one
 // to eight cells, and a platelet's new faces a few dozen.
 void FaceGrid::refit(const WorkMesh& w) {
-  if (built_faces_ > 0 && 4 * w.live_faces > built_faces_) return;
+  if (built_faces_ > 0 && 4 * w.live_faces > built_faces_ && big_.size() <= big_limit_) return;
   double sum = 0;
   long long n = 0;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -93,12 +92,22 @@ void FaceGrid::build(const WorkMesh& w, double cell) {
   slots_ = BigVector<Slot>(capacity);
   set_shift();
   used_ = 0;
+  big_.clear();
   built_faces_ = w.live_faces;
+  ++fits_;
   for (size_t f = 0; f < w.tri.size(); ++f) {
     if (!w.face_alive[f]) continue;
     const auto& t = w.tri[f];
     insert(int(f), triangle_box(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]));
   }
+  // (Twice as many as now: faces big at every fit do not refit each batch.)
+  big_limit_ = 2 * big_.size() + 64 + size_t(w.live_faces / 64);
+}
+
+bool FaceGrid::is_big(const std::array<int, 3>& c0, const std::array<int, 3>& c1) const {
+  double cells = 1;
+  for (size_t k = 0; k < 3; ++k) cells *= double(c1[k]) - double(c0[k]) + 1;
+  return cells > double(big_cells_);
 }
 
 std::array<int, 3> FaceGrid::cell_of(const float x[3]) const {
@@ -163,6 +172,10 @@ void FaceGrid::grow() {
 void FaceGrid::insert(int face, const Box3f& b) {
   box_[size_t(face)] = b;
   const std::array<int, 3> c0 = cell_of(b.lo.data()), c1 = cell_of(b.hi.data());
+  if (is_big(c0, c1)) {
+    big_.push_back(face);
+    return;
+  }
   for (int z = c0[2]; z <= c1[2]; ++z)
     for (int y = c0[1]; y <= c1[1]; ++y)
       for (int x = c0[0]; x <= c1[0]; ++x) add(key(x, y, z), face, b);
@@ -171,6 +184,15 @@ void FaceGrid::insert(int face, const Box3f& b) {
 void FaceGrid::erase(int face, const Box3f& b) {
   const size_t mask = slots_.size() - 1;
   const std::array<int, 3> c0 = cell_of(b.lo.data()), c1 = cell_of(b.hi.data());
+  if (is_big(c0, c1)) {
+    // (The list's order is not kept: queries only ask whether any crosses.)
+    const auto it = std::find(big_.begin(), big_.end(), face);
+    if (it != big_.end()) {
+      *it = big_.back();
+      big_.pop_back();
+    }
+    return;
+  }
   for (int z = c0[2]; z <= c1[2]; ++z)
     for (int y = c0[1]; y <= c1[1]; ++y)
       for (int x = c0[0]; x <= c1[0]; ++x) {
@@ -230,6 +252,46 @@ void make_tested(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen
 
 }  // namespace
 
+template <class Test>
+bool FaceGrid::any_in_cells(const Box3f& region, Test test) const {
+  const std::array<int, 3> c0 = cell_of(region.lo.data()), c1 = cell_of(region.hi.data());
+  // A face is met in the cell of its box's and the region's low corner only.
+  const auto first_meeting = [&](const Box3f& bg, const std::array<int, 3>& c) {
+    if (!region.meets(bg)) return false;
+    const float low[3] = {std::max(region.lo[0], bg.lo[0]), std::max(region.lo[1], bg.lo[1]),
+                          std::max(region.lo[2], bg.lo[2])};
+    return cell_of(low) == c;
+  };
+  double cells = 1;
+  for (size_t k = 0; k < 3; ++k) cells *= double(c1[k]) - double(c0[k]) + 1;
+  if (cells > double(slots_.size())) {
+    // Fewer slots than cells to walk: every slot, its cell from its key.
+    constexpr uint64_t mask21 = (uint64_t(1) << 21) - 1;
+    for (const Slot& slot : slots_) {
+      if (slot.key == kFree || slot.count == 0) continue;
+      const std::array<int, 3> c{int(slot.key & mask21) - kReach, int((slot.key >> 21) & mask21) - kReach,
+                                 int(slot.key >> 42) - kReach};
+      for (int j = 0; j < slot.count; ++j)
+        if (first_meeting(slot.box[j], c) && test(slot.face[j], slot.box[j])) return true;
+    }
+    return false;
+  }
+  const size_t mask = slots_.size() - 1;
+  for (int z = c0[2]; z <= c1[2]; ++z)
+    for (int y = c0[1]; y <= c1[1]; ++y)
+      for (int x = c0[0]; x <= c1[0]; ++x) {
+        const std::array<int, 3> c{x, y, z};
+        const uint64_t k = key(x, y, z);
+        for (size_t s = first_slot(k); slots_[s].key != kFree; s = (s + 1) & mask) {
+          const Slot& slot = slots_[s];
+          if (slot.key != k) continue;
+          for (int j = 0; j < slot.count; ++j)
+            if (first_meeting(slot.box[j], c) && test(slot.face[j], slot.box[j])) return true;
+        }
+      }
+  return false;
+}
+
 // NOTE: one walk over the cells of the union of the new faces' boxes: a
 // face near the platelet meets several new faces, and their cells are
 // mostly the same.
@@ -244,35 +306,21 @@ bool FaceGrid::crosses(const WorkMesh& w, const Platelet& p, const Eigen::Vector
     region->add(made[i].box);
   }
   if (region->empty()) return false;
-  const size_t mask = slots_.size() - 1;
-  const std::array<int, 3> c0 = cell_of(region->lo.data()), c1 = cell_of(region->hi.data());
   Tested other;
-  for (int z = c0[2]; z <= c1[2]; ++z)
-    for (int y = c0[1]; y <= c1[1]; ++y)
-      for (int x = c0[0]; x <= c1[0]; ++x) {
-        const std::array<int, 3> c{x, y, z};
-        const uint64_t k = key(x, y, z);
-        for (size_t s = first_slot(k); slots_[s].key != kFree; s = (s + 1) & mask) {
-          const Slot& slot = slots_[s];
-          if (slot.key != k) continue;
-          for (int j = 0; j < slot.count; ++j) {
-            const int g = slot.face[j];
-            const Box3f& bg = slot.box[j];
-            if (!region->meets(bg)) continue;
-            const float low[3] = {std::max(region->lo[0], bg.lo[0]), std::max(region->lo[1], bg.lo[1]),
-                                  std::max(region->lo[2], bg.lo[2])};
-            if (cell_of(low) != c) continue;  // met in the cell of the boxes' low corner only
-            if (in_platelet(p, g)) continue;
-            const auto& t = w.tri[size_t(g)];
-            make_tested(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])], t, other);
-            for (const Tested& m : made) {
-              if (!m.box.meets(other.box)) continue;
-              if (certainly_apart(m.p, m.n, m.v, other.p, other.n, other.v, m.extent + other.extent)) continue;
-              if (triangles_overlap(m.p, m.n, m.v, other.p, other.n, other.v).overlap) return true;
-            }
-          }
-        }
-      }
+  const auto crossed = [&](int g, const Box3f& bg) {
+    if (!region->meets(bg) || in_platelet(p, g)) return false;
+    const auto& t = w.tri[size_t(g)];
+    make_tested(w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])], t, other);
+    for (const Tested& m : made) {
+      if (!m.box.meets(other.box)) continue;
+      if (certainly_apart(m.p, m.n, m.v, other.p, other.n, other.v, m.extent + other.extent)) continue;
+      if (triangles_overlap(m.p, m.n, m.v, other.p, other.n, other.v).overlap) return true;
+    }
+    return false;
+  };
+  if (any_in_cells(*region, crossed)) return true;
+  for (int g : big_)
+    if (crossed(g, box_[size_t(g)])) return true;
   return false;
 }
 

@@ -12,6 +12,13 @@
 // met in several cells is tested once without a set of the faces seen.
 // Boxes are kept in float, rounded outwards: a box is only a filter, and the
 // exact test decides.
+// NOTE: a face far larger than the cells (a ground quad under a detailed
+// model, or faces grown between refits) would fill thousands of cells: a
+// face whose box meets more than `big_cells` cells is kept out of them, in a
+// list that every query reads, and a query whose region meets more cells
+// than the table has slots reads the slots instead of walking its cells. The
+// grid is fitted again when the list outgrows twice its length at the last
+// fit (plus 64 and a 64th of the faces).
 #pragma once
 
 #include <array>
@@ -43,8 +50,9 @@ Box3f triangle_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
 
 class FaceGrid {
  public:
-  // Every live face of w, in cells of about its faces' mean size.
-  explicit FaceGrid(const WorkMesh& w);
+  // Every live face of w, in cells of about its faces' mean size; faces
+  // meeting more than big_cells cells in the list of big ones.
+  explicit FaceGrid(const WorkMesh& w, size_t big_cells = 64);
   FaceGrid(const FaceGrid&) = delete;
   FaceGrid& operator=(const FaceGrid&) = delete;
 
@@ -59,8 +67,12 @@ class FaceGrid {
   // may call it side by side.
   void update(const WorkMesh& w, const Platelet& p, size_t made);
   // Starts again with cells fitted to the faces as they are now when they
-  // have grown to 4 times their area (a pass's start: faces only grow).
+  // have grown to 4 times their area (faces only grow) or the big ones have
+  // become too many. Only between batches: no query may run beside it.
   void refit(const WorkMesh& w);
+  // Faces kept out of the cells now, and fits so far (tests, statistics).
+  size_t big_faces() const { return big_.size(); }
+  int fits() const { return fits_; }
 
  private:
   // NOTE: the table holds the cells' faces itself, with their boxes, up to 4
@@ -85,6 +97,11 @@ class FaceGrid {
   void erase(int face, const Box3f& b);
   void add(uint64_t key, int face, const Box3f& box);
   void grow();
+  bool is_big(const std::array<int, 3>& c0, const std::array<int, 3>& c1) const;
+  // Calls test(face, box) once for every face in the cells whose box meets
+  // region (big faces apart); true as soon as a call returns true.
+  template <class Test>
+  bool any_in_cells(const Box3f& region, Test test) const;
 
   double inverse_ = 1;
   Eigen::Vector3d origin_{0, 0, 0};
@@ -92,6 +109,10 @@ class FaceGrid {
   BigVector<Box3f> box_;  // per face id: its box when inserted
   BigVector<Slot> slots_;
   size_t used_ = 0;
+  size_t big_cells_ = 64;
+  std::vector<int> big_;      // faces kept out of the cells
+  size_t big_limit_ = 64;     // refit beyond this many
+  int fits_ = 0;
   int shift_ = 54;  // 64 - log2(the slots)
   std::atomic_flag lock_ = ATOMIC_FLAG_INIT;  // update() side by side
 };

@@ -262,6 +262,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
       }
       commit_pending();
       ahead_pays = 4 * met < end - begin;
+      remover.refit_grid();  // (nothing is computed ahead between batches)
     }
     if (stop) {
       stats.stop_reason = 3;
