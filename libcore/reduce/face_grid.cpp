@@ -92,6 +92,7 @@ void FaceGrid::build(const WorkMesh& w, double cell) {
   slots_ = BigVector<Slot>(capacity);
   set_shift();
   used_ = 0;
+  for (const Big& g : big_) big_at_[size_t(g.face)] = -1;
   big_.clear();
   built_faces_ = w.live_faces;
   ++fits_;
@@ -173,7 +174,9 @@ void FaceGrid::insert(int face, const Box3f& b) {
   box_[size_t(face)] = b;
   const std::array<int, 3> c0 = cell_of(b.lo.data()), c1 = cell_of(b.hi.data());
   if (is_big(c0, c1)) {
-    big_.push_back(face);
+    if (big_at_.empty()) big_at_.assign(box_.size(), -1);
+    big_at_[size_t(face)] = int32_t(big_.size());
+    big_.push_back({face, b});
     return;
   }
   for (int z = c0[2]; z <= c1[2]; ++z)
@@ -186,11 +189,11 @@ void FaceGrid::erase(int face, const Box3f& b) {
   const std::array<int, 3> c0 = cell_of(b.lo.data()), c1 = cell_of(b.hi.data());
   if (is_big(c0, c1)) {
     // (The list's order is not kept: queries only ask whether any crosses.)
-    const auto it = std::find(big_.begin(), big_.end(), face);
-    if (it != big_.end()) {
-      *it = big_.back();
-      big_.pop_back();
-    }
+    const int32_t at = big_at_[size_t(face)];
+    big_at_[size_t(big_.back().face)] = at;
+    big_[size_t(at)] = big_.back();
+    big_.pop_back();
+    big_at_[size_t(face)] = -1;
     return;
   }
   for (int z = c0[2]; z <= c1[2]; ++z)
@@ -319,8 +322,8 @@ bool FaceGrid::crosses(const WorkMesh& w, const Platelet& p, const Eigen::Vector
     return false;
   };
   if (any_in_cells(*region, crossed)) return true;
-  for (int g : big_)
-    if (crossed(g, box_[size_t(g)])) return true;
+  for (const Big& g : big_)
+    if (crossed(g.face, g.box)) return true;
   return false;
 }
 

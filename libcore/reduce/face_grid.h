@@ -14,8 +14,8 @@
 // exact test decides.
 // NOTE: a face far larger than the cells (a ground quad under a detailed
 // model, or faces grown between refits) would fill thousands of cells: a
-// face whose box meets more than `big_cells` cells is kept out of them, in a
-// list that every query reads, and a query whose region meets more cells
+// face whose box meets more than `big_cells` (512) cells is kept out of them,
+// with its box, in a list that every query reads, and a query whose region meets more cells
 // than the table has slots reads the slots instead of walking its cells. The
 // grid is fitted again when the list outgrows twice its length at the last
 // fit (plus 64 and a 64th of the faces).
@@ -52,7 +52,7 @@ class FaceGrid {
  public:
   // Every live face of w, in cells of about its faces' mean size; faces
   // meeting more than big_cells cells in the list of big ones.
-  explicit FaceGrid(const WorkMesh& w, size_t big_cells = 64);
+  explicit FaceGrid(const WorkMesh& w, size_t big_cells = 512);
   FaceGrid(const FaceGrid&) = delete;
   FaceGrid& operator=(const FaceGrid&) = delete;
 
@@ -109,8 +109,13 @@ class FaceGrid {
   BigVector<Box3f> box_;  // per face id: its box when inserted
   BigVector<Slot> slots_;
   size_t used_ = 0;
-  size_t big_cells_ = 64;
-  std::vector<int> big_;      // faces kept out of the cells
+  size_t big_cells_ = 512;
+  struct Big {
+    int face;
+    Box3f box;
+  };
+  std::vector<Big> big_;      // faces kept out of the cells, with their boxes
+  std::vector<int32_t> big_at_;  // per face id: its place in big_, or -1 (sized at the first)
   size_t big_limit_ = 64;     // refit beyond this many
   int fits_ = 0;
   int shift_ = 54;  // 64 - log2(the slots)

@@ -59,7 +59,8 @@ class Remover {
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
   const Tracker& tracker() const { return tracker_; }
-  // The overlap guard's grid fitted again to the faces (a pass's start).
+  // The overlap guard's grid fitted again to the faces when they have
+  // outgrown it (between batches: nothing is computed ahead then).
   void refit_grid() {
     if (grid_) grid_->refit(w_);
   }
