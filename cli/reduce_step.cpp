@@ -80,6 +80,7 @@ Json reduce_json(const isoform_mesh* mesh, double seconds) {
               {"removals", s.removals},
               {"swaps", s.swaps},
               {"vertex_points", s.vertex_points},
+              {"kernel_points", s.kernel_points},
               {"passes", s.passes},
               {"curvature_computed", s.curvature_computed != 0},
               {"stop", kStopReasons[s.stop_reason & 3]},

@@ -203,6 +203,7 @@ class ReduceStats(ctypes.Structure):
         ("parts_left_alone", c_long_long),
         ("triangles_left_alone", c_long_long),
         ("refused_overlap", c_long_long),
+        ("kernel_points", c_long_long),
     ]
 
 

@@ -40,6 +40,7 @@ isoform_reduce_stats to_stats(const isoform::ReduceStats& s) {
   o.removals = s.removals;
   o.swaps = s.swaps;
   o.vertex_points = s.vertex_points;
+  o.kernel_points = s.kernel_points;
   o.passes = s.passes;
   o.curvature_computed = s.curvature_computed ? 1 : 0;
   o.stop_reason = s.stop_reason;

@@ -281,6 +281,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   crew.reset();
   stats.swaps = remover.swaps();
   stats.vertex_points = remover.vertex_points();
+  stats.kernel_points = remover.kernel_points();
   remover.tracker().measure_result(w);
   stats.max_distance = remover.tracker().max_distance();
   stats.graph_rms = remover.tracker().rms();

@@ -36,7 +36,8 @@ struct ReduceOptions {
   // triangles (Tracker::refine). Off reproduces the seed's point.
   bool refine_point = true;
   // Beyond the seed: when the fitted point fails the half-plane test or a
-  // guard on a closed corona, try T's vertices in its place.
+  // guard on a closed corona, try T's vertices in its place, then the point
+  // above the centroid of the polygon's kernel (kernel.h).
   bool vertex_fallback = true;
   // Beyond the seed: reduce only the parts that pass every entry check and
   // copy the others unchanged, instead of refusing the mesh (manifold_parts.h).
@@ -73,6 +74,7 @@ struct ReduceStats {
   long long removals = 0;    // triangles replaced by a point
   long long swaps = 0;       // diagonal swaps made
   long long vertex_points = 0;  // removals whose point is a vertex of T (vertex_fallback)
+  long long kernel_points = 0;  // removals whose point lies above the polygon's kernel (the same)
   int passes = 0;            // passes of Remark 5.9
   long long refusals_remembered = 0;  // refused tries not computed again (remember_refusals)
   bool curvature_computed = false;  // the input had none, so Chapter 4 ran first

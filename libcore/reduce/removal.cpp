@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "kernel.h"
 #include "prefetch.h"
 #include "weights.h"
 
@@ -104,19 +105,40 @@ bool Remover::faces_ok(const Proposal& q, const Frame& frame, const Eigen::Vecto
   return true;
 }
 
+// The point of the fitted height (along the frame's normal) above the
+// centroid of the polygon's kernel, pulled in by a twentieth of each edge
+// (kernel.h) so that no new triangle starts as a sliver; none when that
+// kernel is empty.
+std::optional<Eigen::Vector3d> Remover::kernel_point(const Platelet& p, const Frame& frame,
+                                                     const Eigen::Vector3d& fitted) const {
+  thread_local std::vector<Eigen::Vector2d> ring;
+  ring.clear();
+  for (int v : p.ring) ring.push_back(frame.uv(w_.pos[size_t(v)]));
+  const std::optional<Eigen::Vector2d> c = kernel_centroid(ring, 0.05);
+  if (!c) return std::nullopt;
+  return Eigen::Vector3d(frame.c + (*c)(0) * frame.b1 + (*c)(1) * frame.b2 + (fitted - frame.c).dot(frame.n) * frame.n);
+}
+
 // The half-plane test, the fan and its guards for the fitted point; when it
 // fails on a closed corona, beyond the seed, T's vertices (nearest to the
-// fitted point first) are tried in its place, as an edge collapse would.
+// fitted point first) are tried in its place, as an edge collapse would,
+// and then the point above the centroid of the polygon's kernel.
 Outcome Remover::place_point(const Frame& frame, bool keep_xy, Proposal& q) const {
   const Platelet& p = q.platelet;
-  Eigen::Vector3d candidates[4] = {q.point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])]};
+  Eigen::Vector3d candidates[5] = {q.point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])],
+                                   q.point};
   const Eigen::Vector3d fitted = q.point;
   std::sort(candidates + 1, candidates + 4, [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
     return (x - fitted).squaredNorm() < (y - fitted).squaredNorm();
   });
-  const int count = p.closed && options_.vertex_fallback ? 4 : 1;
+  const int count = p.closed && options_.vertex_fallback ? 5 : 1;
   Outcome first = Outcome::Removed;
   for (int i = 0; i < count; ++i) {
+    if (i == 4) {
+      const std::optional<Eigen::Vector3d> k = kernel_point(p, frame, fitted);
+      if (!k) break;
+      candidates[4] = *k;
+    }
     Outcome o = Outcome::Removed;
     if (!half_plane_ok(p, frame, candidates[i]))
       o = Outcome::HalfPlane;
@@ -128,7 +150,8 @@ Outcome Remover::place_point(const Frame& frame, bool keep_xy, Proposal& q) cons
     }
     if (o == Outcome::Removed) {
       q.point = candidates[i];
-      q.at_vertex = i > 0;
+      q.at_vertex = i > 0 && i < 4;
+      q.at_kernel = i == 4;
       return o;
     }
     if (i == 0) first = o;
@@ -140,6 +163,7 @@ void Remover::propose(int f, Proposal& out) const {
   out.face = f;
   out.swaps = 0;
   out.at_vertex = false;
+  out.at_kernel = false;
   out.pending.assigned_valid = false;
   out.platelet.face = -1;
   out.platelet.faces.clear();
@@ -230,6 +254,7 @@ Outcome Remover::accept(const Proposal& p) {
   }
   swaps_ += p.swaps;
   vertex_points_ += p.at_vertex ? 1 : 0;
+  kernel_points_ += p.at_kernel ? 1 : 0;
   w_.live_faces -= (long long)(p.platelet.faces.size() - p.faces.tri.size());
   return Outcome::Removed;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "face_grid.h"
@@ -29,6 +30,7 @@ struct Proposal {
   Eigen::Vector3d point{0, 0, 0};  // the point inserted
   int swaps = 0;
   bool at_vertex = false;  // the point is a vertex of T (vertex fallback)
+  bool at_kernel = false;  // the point lies above the polygon's kernel's centroid (the same)
   TrackerPending pending;
   std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
   // The vertices whose data it read: T's, and those of every platelet face.
@@ -58,6 +60,7 @@ class Remover {
   void commit(const Proposal& p, int pass);
   long long swaps() const { return swaps_; }
   long long vertex_points() const { return vertex_points_; }
+  long long kernel_points() const { return kernel_points_; }
   const Tracker& tracker() const { return tracker_; }
   // The overlap guard's grid fitted again to the faces when they have
   // outgrown it (between batches: nothing is computed ahead then).
@@ -69,6 +72,7 @@ class Remover {
  private:
   Outcome evaluate(Proposal& p) const;
   Outcome place_point(const Frame& frame, bool keep_xy, Proposal& p) const;
+  std::optional<Eigen::Vector3d> kernel_point(const Platelet& p, const Frame& frame, const Eigen::Vector3d& fitted) const;
   bool half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const;
   bool domain_kept(const Platelet& p, const Eigen::Vector3d& point) const;
   bool faces_ok(const Proposal& p, const Frame& frame, const Eigen::Vector3d& point) const;
@@ -78,7 +82,7 @@ class Remover {
   ReduceOptions options_;
   Tracker tracker_;
   std::unique_ptr<FaceGrid> grid_;  // prevent_overlap
-  long long swaps_ = 0, vertex_points_ = 0;
+  long long swaps_ = 0, vertex_points_ = 0, kernel_points_ = 0;
 };
 
 }  // namespace isoform::reduce

@@ -182,6 +182,7 @@ int main(void) {
   FIELD(isoform_reduce_stats, parts_left_alone);
   FIELD(isoform_reduce_stats, triangles_left_alone);
   FIELD(isoform_reduce_stats, refused_overlap);
+  FIELD(isoform_reduce_stats, kernel_points);
   end();
 
   begin("isoform_patch_options", sizeof(isoform_patch_options));

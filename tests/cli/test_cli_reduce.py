@@ -334,12 +334,30 @@ def case_graph(tmp):
                    "not a graph z = f(x, y): triangle 0 (vertices 0, 42, 1) does not turn counterclockwise "
                    "seen from +z", ["grid.obj", "turned.obj", "text.obj"])
 
+def case_kernel_points(tmp):
+    """headsq at 1150.5 to 1 %: where neither the fitted point nor a vertex of T sees the whole
+    polygon, the centroid of its kernel often does. Without that point the same call stopped at
+    7,688 triangles; with it the reduction goes on (6,700 measured), closed, same genus and parts."""
+    vdb = os.path.join(tmp, "head.vdb")
+    run("convert", data("headsq_64x64x93_u16le.raw"), "--dims", "64,64,93", "--type", "u16", "-o", vdb)
+    mesh = os.path.join(tmp, "head.obj")
+    run("contour", vdb, "--iso", "1150.5", "-q", "-o", mesh)
+    points, _, faces = base.read_obj(mesh)
+    out = os.path.join(tmp, "small.obj")
+    summary, _ = run_json("reduce", mesh, "--keep", "1%", "-o", out)
+    small_points, _, small = base.read_obj(out)
+    base.check_closed(small, len(small_points), out)
+    expect(summary["kernel_points"] > 500 and summary["vertex_points"] > 0, f"{summary}")
+    expect(len(small) == summary["triangles_after"] < 7000, f"{len(small)} triangles, {summary}")
+    expect(euler(small_points, small) == euler(points, faces), "Euler characteristic changed")
+    expect(parts(small) == parts(faces), f"parts {parts(faces)} -> {parts(small)}")
+
 
 GROUPS = {
     "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
                    case_overlap, case_manifold_parts, case_nan_ply, case_graph],
     "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
-                        case_sphere_contour_passes, case_no_overlap],
+                        case_sphere_contour_passes, case_no_overlap, case_kernel_points],
 }
 
 
