@@ -4,13 +4,16 @@
 #include "mesh_overlap.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "../stretch_sort.h"
 #include "big_vector.h"
 
 namespace isoform::reduce {
@@ -22,6 +25,7 @@ constexpr int64_t kCellMax = (int64_t(1) << kCellBits) - 1;
 struct Box {
   float lo[3], hi[3];
   bool valid;
+  bool oversized;  // left out of the grid (take_oversized)
 };
 
 struct Entry {
@@ -58,6 +62,7 @@ BigVector<Box> triangle_boxes(const Corners& corners, size_t nt) {
     corners.of(t, p);
     Box& b = boxes[t];
     b.valid = true;
+    b.oversized = false;
     for (int k = 0; k < 3; ++k) {
       const double lo = std::min({p[0][k], p[1][k], p[2][k]}), hi = std::max({p[0][k], p[1][k], p[2][k]});
       b.valid &= std::isfinite(lo) && std::isfinite(hi);
@@ -74,8 +79,10 @@ struct Grid {
   double origin[3] = {0, 0, 0};
   double inverse_size = 1.0;
 
+  // (Clamped first, then truncated: the same as the floor of the clamped
+  // value, without the call std::floor is on this target.)
   int64_t cell(float x, int k) const {
-    const double c = std::floor((double(x) - origin[k]) * inverse_size);
+    const double c = (double(x) - origin[k]) * inverse_size;
     return int64_t(std::clamp(c, 0.0, double(kCellMax)));
   }
   static uint64_t key(int64_t x, int64_t y, int64_t z) {
@@ -114,77 +121,79 @@ struct CellRange {
   size_t count() const { return size_t(hi[0] - lo[0] + 1) * size_t(hi[1] - lo[1] + 1) * size_t(hi[2] - lo[2] + 1); }
 };
 
-BigVector<CellRange> cell_ranges(const BigVector<Box>& boxes, const Grid& g) {
-  BigVector<CellRange> ranges(boxes.size());
-  tbb::parallel_for(size_t(0), boxes.size(), [&](size_t t) {
-    if (boxes[t].valid)
-      for (int k = 0; k < 3; ++k) {
-        ranges[t].lo[k] = int32_t(g.cell(boxes[t].lo[k], k));
-        ranges[t].hi[k] = int32_t(g.cell(boxes[t].hi[k], k));
-      }
-  });
-  return ranges;
+// NOTE: computed again wherever it is needed rather than kept per triangle:
+// six roundings are cheaper than 24 MB of fresh memory (a first write of a
+// page costs more than the arithmetic, and most of the check's time was
+// the kernel clearing pages).
+inline CellRange cell_range(const Box& b, const Grid& g) {
+  CellRange r;
+  if (!b.valid || b.oversized) return r;
+  for (int k = 0; k < 3; ++k) {
+    r.lo[k] = int32_t(g.cell(b.lo[k], k));
+    r.hi[k] = int32_t(g.cell(b.hi[k], k));
+  }
+  return r;
 }
 
-// The cells of one range, with their Entry::first bits.
+// NOTE: buckets hold whole blocks of 4 x 4 x 4 cells, not single cells: a
+// bucket's triangles are neighbours, gathered once for all the block's
+// cells, and consecutive triangles of the input mostly fill the same
+// bucket. The grid is cut into slabs one block thick across its longest
+// axis, each tested on its own (side by side): only the entries of the
+// slabs under test exist (a megabyte or two each, in cache, instead of
+// 86 MB written once and read once for the bench's 1M-triangle contour:
+// on this kind of host the first write of fresh memory was most of the
+// check's time). Within a slab the blocks are numbered along the other two
+// axes when they are few enough, else by a hash of the block.
+constexpr int kBlockBits = 2;
+
+// The slab axis and the two others, and the grid's extent in blocks.
+struct SlabAxes {
+  int axis = 2, u = 0, v = 1;
+  int32_t blocks[3] = {1, 1, 1};
+  int32_t block(int32_t cell) const { return cell >> kBlockBits; }
+};
+
+// The cells of range r within slab `slab`, with their Entry::first bits.
 template <class Visit>
-void for_cells(const CellRange& r, Visit visit) {
-  for (int32_t z = r.lo[2]; z <= r.hi[2]; ++z)
-    for (int32_t y = r.lo[1]; y <= r.hi[1]; ++y)
-      for (int32_t x = r.lo[0]; x <= r.hi[0]; ++x)
+void for_cells(const CellRange& r, const SlabAxes& s, int32_t slab, Visit visit) {
+  int32_t lo[3] = {r.lo[0], r.lo[1], r.lo[2]}, hi[3] = {r.hi[0], r.hi[1], r.hi[2]};
+  lo[s.axis] = std::max(lo[s.axis], slab << kBlockBits);
+  hi[s.axis] = std::min(hi[s.axis], ((slab + 1) << kBlockBits) - 1);
+  for (int32_t z = lo[2]; z <= hi[2]; ++z)
+    for (int32_t y = lo[1]; y <= hi[1]; ++y)
+      for (int32_t x = lo[0]; x <= hi[0]; ++x)
         visit(Grid::key(x, y, z), uint32_t(x == r.lo[0]) | uint32_t(y == r.lo[1]) << 1 | uint32_t(z == r.lo[2]) << 2);
 }
 
-// NOTE: buckets hold whole blocks of 4 x 4 x 4 cells, not single cells, and
-// are numbered in the blocks' order along x, then y, then z when the blocks
-// are few enough (else by a hash of the block): a bucket's triangles are
-// then neighbours, gathered once for all the block's cells, the next bucket
-// reads mostly the same part of memory, and consecutive triangles of the
-// input mostly fill the same bucket. With one hashed cell per bucket every
-// bucket started cold (its boxes and corners were all over memory).
-constexpr int kBlockBits = 2;
-
 struct BucketMap {
+  SlabAxes axes;
   bool dense = false;
   int bits = 1;
-  uint64_t nx = 1, ny = 1;  // blocks along x and y (dense)
   size_t count = 2;
   size_t operator()(uint64_t key) const {
-    const uint64_t x = (key & uint64_t(kCellMax)) >> kBlockBits;
-    const uint64_t y = ((key >> kCellBits) & uint64_t(kCellMax)) >> kBlockBits;
-    const uint64_t z = (key >> (2 * kCellBits)) >> kBlockBits;
-    if (dense) return size_t(x + nx * (y + ny * z));
-    return size_t((Grid::key(int64_t(x), int64_t(y), int64_t(z)) * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+    const int32_t c[3] = {int32_t(key & uint64_t(kCellMax)), int32_t((key >> kCellBits) & uint64_t(kCellMax)),
+                          int32_t(key >> (2 * kCellBits))};
+    const uint64_t u = uint64_t(axes.block(c[axes.u])), v = uint64_t(axes.block(c[axes.v]));
+    if (dense) return size_t(u + uint64_t(axes.blocks[axes.u]) * v);
+    return size_t((Grid::key(int64_t(u), int64_t(v), 0) * 0x9E3779B97F4A7C15ull) >> (64 - bits));
   }
 };
 
-BucketMap bucket_map(const BigVector<CellRange>& ranges, size_t entries) {
-  int32_t top[3] = {0, 0, 0};
-  for (const CellRange& r : ranges)
-    for (int k = 0; k < 3; ++k) top[k] = std::max(top[k], r.hi[k]);
+// The buckets of a slab of `entries` entries.
+BucketMap bucket_map(const SlabAxes& axes, size_t entries) {
   BucketMap m;
-  const uint64_t n[3] = {uint64_t(top[0] >> kBlockBits) + 1, uint64_t(top[1] >> kBlockBits) + 1,
-                         uint64_t(top[2] >> kBlockBits) + 1};
-  const double blocks = double(n[0]) * double(n[1]) * double(n[2]);
-  if (blocks <= 4.0 * double(entries) + 4096.0) {
+  m.axes = axes;
+  const double count = double(axes.blocks[axes.u]) * double(axes.blocks[axes.v]);
+  if (count <= 4.0 * double(entries) + 4096.0) {
     m.dense = true;
-    m.nx = n[0];
-    m.ny = n[1];
-    m.count = size_t(blocks);
+    m.count = size_t(count);
     return m;
   }
   while (m.bits < 40 && (size_t(1) << m.bits) < entries / 64) ++m.bits;  // about 64 entries a bucket
   m.count = size_t(1) << m.bits;
   return m;
 }
-
-// (cell, triangle) entries grouped by block (a counting sort, O(n)); each
-// bucket is sorted later, so equal cells end up adjacent.
-struct Buckets {
-  BigVector<size_t> start;  // per bucket, into entries (big_vector.h)
-  BigVector<Entry> entries;
-  bool dense = false;         // each bucket one block (BucketMap::dense)
-};
 
 // The cell of key within its block, 0 to 63, in the order of the keys.
 uint32_t cell_in_block(uint64_t key) {
@@ -204,42 +213,80 @@ void group_by_cell(Entry* first, Entry* last, std::vector<Entry>& scratch) {
   std::copy(scratch.begin(), scratch.end(), first);
 }
 
-// NOTE: the counting sort runs in a few stretches of triangles side by
-// side, each with its own counts per bucket; a bucket then holds the first
-// stretch's entries, then the second's, and so on: the order of one pass over
-// all triangles.
-Buckets grid_entries(const BigVector<CellRange>& ranges) {
+// Every slab's triangles, ascending (a counting sort: a triangle is listed
+// in each slab its range reaches, most in one or two).
+struct Slabs {
+  SlabAxes axes;
+  std::vector<int32_t> triangles;
+  std::vector<size_t> start;  // per slab, into triangles
+};
+
+// NOTE: the grid's extent and the slabs' lists in a few stretches of
+// triangles side by side (stretch_sort.h; a serial walk of 1M triangles'
+// ranges was a fifth of the check's time alone), each slab's triangles
+// ascending.
+Slabs slabs_of(const BigVector<Box>& boxes, const Grid& g) {
+  Slabs s;
+  SlabAxes& a = s.axes;
+  const size_t n = boxes.size();
+  const size_t stretches = n < 65536 ? 1 : size_t(std::clamp(tbb::this_task_arena::max_concurrency(), 1, 4));
+  const size_t per = (n + stretches - 1) / stretches;
+  std::vector<std::array<int32_t, 3>> top(stretches, std::array<int32_t, 3>{1, 1, 1});
+  tbb::parallel_for(size_t(0), stretches, [&](size_t k) {
+    for (size_t t = k * per; t < std::min(n, (k + 1) * per); ++t) {
+      const CellRange r = cell_range(boxes[t], g);
+      for (int c = 0; c < 3; ++c) top[k][size_t(c)] = std::max(top[k][size_t(c)], a.block(r.hi[c]) + 1);
+    }
+  });
+  for (const auto& t : top)
+    for (int c = 0; c < 3; ++c) a.blocks[c] = std::max(a.blocks[c], t[size_t(c)]);
+  a.axis = int(std::max_element(a.blocks, a.blocks + 3) - a.blocks);
+  a.u = (a.axis + 1) % 3;
+  a.v = (a.axis + 2) % 3;
+  sort_by_keys_in_stretches(
+      n, size_t(a.blocks[a.axis]),
+      [&](size_t t, auto visit) {
+        const CellRange r = cell_range(boxes[t], g);
+        if (r.lo[0] > r.hi[0]) return;
+        for (int32_t slab = a.block(r.lo[a.axis]); slab <= a.block(r.hi[a.axis]); ++slab) visit(size_t(slab));
+      },
+      s.start, s.triangles);
+  return s;
+}
+
+// One slab's (cell, triangle) entries grouped by bucket (a counting sort),
+// each bucket in triangle order, each triangle's entries together.
+struct Buckets {
+  std::vector<size_t> start;  // per bucket, into entries
+  std::vector<Entry> entries;
+  bool dense = false;  // each bucket one block (BucketMap::dense)
+};
+
+void fill_slab(const BigVector<Box>& boxes, const Grid& g, const Slabs& slabs, int32_t slab, Buckets& out) {
+  const int32_t* first = slabs.triangles.data() + slabs.start[size_t(slab)];
+  const int32_t* last = slabs.triangles.data() + slabs.start[size_t(slab) + 1];
+  const SlabAxes& a = slabs.axes;
   size_t n = 0;
-  for (const CellRange& r : ranges) n += r.count();
-  const BucketMap bucket = bucket_map(ranges, n);
-  const size_t stretches =
-      ranges.size() < 65536 ? 1 : size_t(std::clamp(tbb::this_task_arena::max_concurrency(), 1, 4));
-  const size_t per = (ranges.size() + stretches - 1) / stretches;
-  std::vector<std::vector<size_t>> fill(stretches, std::vector<size_t>(bucket.count, 0));
-  const auto each_stretch = [&](auto visit) {
-    tbb::parallel_for(size_t(0), stretches, [&](size_t s) {
-      for (size_t t = s * per; t < std::min(ranges.size(), (s + 1) * per); ++t)
-        for_cells(ranges[t], [&](uint64_t key, uint32_t first) { visit(fill[s], t, key, first); });
-    });
-  };
-  each_stretch([&](std::vector<size_t>& count, size_t, uint64_t key, uint32_t) { ++count[bucket(key)]; });
-  Buckets out;
+  for (const int32_t* t = first; t != last; ++t) {
+    const CellRange r = cell_range(boxes[size_t(*t)], g);
+    const int32_t across = std::min(((slab + 1) << kBlockBits) - 1, r.hi[a.axis]) -
+                           std::max(slab << kBlockBits, r.lo[a.axis]) + 1;
+    n += size_t(across) * size_t(r.hi[a.u] - r.lo[a.u] + 1) * size_t(r.hi[a.v] - r.lo[a.v] + 1);
+  }
+  const BucketMap bucket = bucket_map(a, n);
   out.dense = bucket.dense;
   out.start.assign(bucket.count + 1, 0);
-  for (size_t b = 0; b < bucket.count; ++b) {
-    size_t at = out.start[b];
-    for (size_t s = 0; s < stretches; ++s) {
-      const size_t count = fill[s][b];
-      fill[s][b] = at;
-      at += count;
-    }
-    out.start[b + 1] = at;
-  }
   out.entries.resize(n);
-  each_stretch([&](std::vector<size_t>& next, size_t t, uint64_t key, uint32_t first) {
-    out.entries[next[bucket(key)]++] = {key, int32_t(t), first};
-  });
-  return out;
+  for (const int32_t* t = first; t != last; ++t)
+    for_cells(cell_range(boxes[size_t(*t)], g), a, slab, [&](uint64_t key, uint32_t) { ++out.start[bucket(key) + 1]; });
+  for (size_t b = 0; b < bucket.count; ++b) out.start[b + 1] += out.start[b];
+  std::vector<size_t>& next = out.start;  // (moved back below)
+  for (const int32_t* t = first; t != last; ++t)
+    for_cells(cell_range(boxes[size_t(*t)], g), a, slab,
+              [&](uint64_t key, uint32_t bits) { out.entries[next[bucket(key)]++] = {key, *t, bits}; });
+  // Each bucket's start was moved to its end, the next one's start.
+  for (size_t b = bucket.count; b > 0; --b) out.start[b] = out.start[b - 1];
+  out.start[0] = 0;
 }
 
 bool boxes_meet(const Box& a, const Box& b) {
@@ -265,6 +312,7 @@ struct LocalTriangle {
 };
 
 struct BucketScratch {
+  Buckets buckets;              // of the slab under test
   std::vector<int32_t> ids;     // the bucket's triangles, ascending
   std::vector<LocalTriangle> local;
   std::vector<Entry> sorted;    // group_by_cell's
@@ -296,14 +344,14 @@ PairOverlap test_pair(const LocalTriangle& ta, const LocalTriangle& tb) {
 // left out of the grid and tested against every triangle's box instead: n
 // box tests rather than more than n / 32 entries, each written, sorted and
 // compared.
-std::vector<int32_t> take_oversized(BigVector<CellRange>& ranges) {
-  const size_t limit = std::max<size_t>(512, ranges.size() / 32);
+std::vector<int32_t> take_oversized(BigVector<Box>& boxes, const Grid& g) {
+  const size_t limit = std::max<size_t>(512, boxes.size() / 32);
+  tbb::parallel_for(size_t(0), boxes.size(), [&](size_t t) {
+    boxes[t].oversized = boxes[t].valid && cell_range(boxes[t], g).count() > limit;
+  });
   std::vector<int32_t> oversized;
-  for (size_t t = 0; t < ranges.size(); ++t)
-    if (ranges[t].count() > limit) {
-      oversized.push_back(int32_t(t));
-      ranges[t] = CellRange{};
-    }
+  for (size_t t = 0; t < boxes.size(); ++t)
+    if (boxes[t].oversized) oversized.push_back(int32_t(t));
   return oversized;
 }
 
@@ -339,11 +387,10 @@ std::vector<OverlapPair> oversized_pairs(const Mesh& mesh, const Corners& corner
 
 std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
   const Corners corners(mesh);
-  const BigVector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
+  BigVector<Box> boxes = triangle_boxes(corners, mesh.triangle_count());
   const Grid grid = make_grid(boxes);
-  BigVector<CellRange> ranges = cell_ranges(boxes, grid);
-  const std::vector<int32_t> oversized = take_oversized(ranges);
-  Buckets buckets = grid_entries(ranges);
+  const std::vector<int32_t> oversized = take_oversized(boxes, grid);
+  const Slabs slabs = slabs_of(boxes, grid);
   tbb::enumerable_thread_specific<BucketScratch> scratch;
   // The pairs of one cell [e, e + count): each pair whose common box starts
   // in this cell.
@@ -358,35 +405,39 @@ std::vector<OverlapPair> find_overlaps(const Mesh& mesh) {
         if (o.overlap) b.found.push_back({e[p].triangle, e[q].triangle, o.near});  // a < b: sorted
       }
   };
-  const size_t bucket_count = buckets.start.size() - 1;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, bucket_count, 64), [&](const tbb::blocked_range<size_t>& r) {
+  // The slabs side by side, each bucket of a slab in turn.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, slabs.start.size() - 1, 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketScratch& b = scratch.local();
-    for (size_t k = r.begin(); k != r.end(); ++k) {
-      Entry* first = buckets.entries.data() + buckets.start[k];
-      Entry* last = buckets.entries.data() + buckets.start[k + 1];
-      if (last - first < 2) continue;
-      // The entries were filled in triangle order, each triangle's together:
-      // its slot among the bucket's triangles goes into the high bits of
-      // Entry::first.
-      b.ids.clear();
-      for (Entry* i = first; i != last; ++i) {
-        if (b.ids.empty() || b.ids.back() != i->triangle) b.ids.push_back(i->triangle);
-        i->first |= uint32_t(b.ids.size() - 1) << 3;
-      }
-      b.local.resize(b.ids.size());
-      for (size_t i = 0; i < b.ids.size(); ++i) b.local[i] = local_triangle(mesh, corners, boxes, size_t(b.ids[i]));
-      // Equal cells together, each in triangle order: in a dense map a
-      // bucket is one block, ordered by the cell within it (a stable
-      // counting sort); else sorted by (cell, triangle).
-      if (buckets.dense)
-        group_by_cell(first, last, b.sorted);
-      else
-        std::sort(first, last);
-      for (Entry* i = first; i != last;) {
-        Entry* end = i;
-        while (end != last && end->key == i->key) ++end;
-        if (end - i > 1) test_cell(i, size_t(end - i), b);
-        i = end;
+    for (size_t slab = r.begin(); slab != r.end(); ++slab) {
+      if (slabs.start[slab + 1] - slabs.start[slab] < 2) continue;
+      fill_slab(boxes, grid, slabs, int32_t(slab), b.buckets);
+      for (size_t k = 0; k + 1 < b.buckets.start.size(); ++k) {
+        Entry* first = b.buckets.entries.data() + b.buckets.start[k];
+        Entry* last = b.buckets.entries.data() + b.buckets.start[k + 1];
+        if (last - first < 2) continue;
+        // The entries were filled in triangle order, each triangle's together:
+        // its slot among the bucket's triangles goes into the high bits of
+        // Entry::first.
+        b.ids.clear();
+        for (Entry* i = first; i != last; ++i) {
+          if (b.ids.empty() || b.ids.back() != i->triangle) b.ids.push_back(i->triangle);
+          i->first |= uint32_t(b.ids.size() - 1) << 3;
+        }
+        b.local.resize(b.ids.size());
+        for (size_t i = 0; i < b.ids.size(); ++i) b.local[i] = local_triangle(mesh, corners, boxes, size_t(b.ids[i]));
+        // Equal cells together, each in triangle order: in a dense map a
+        // bucket is one block, ordered by the cell within it (a stable
+        // counting sort); else sorted by (cell, triangle).
+        if (b.buckets.dense)
+          group_by_cell(first, last, b.sorted);
+        else
+          std::sort(first, last);
+        for (Entry* i = first; i != last;) {
+          Entry* end = i;
+          while (end != last && end->key == i->key) ++end;
+          if (end - i > 1) test_cell(i, size_t(end - i), b);
+          i = end;
+        }
       }
     }
   });

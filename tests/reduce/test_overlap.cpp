@@ -238,6 +238,31 @@ TEST(MeshOverlap, TheGridFindsExactlyThePairsOfTheDirectTest) {
   EXPECT_EQ(grid_pairs(fold), folded);
 }
 
+// The grid is tested in slabs across its longest axis, each slab's blocks
+// numbered densely or, where they would be many times the entries, hashed:
+// linked tori turned upright (so that they cross many slabs), once on their
+// own and once with a small torus far off along every axis (hashed slabs).
+TEST(MeshOverlap, SlabsDenseOrHashedFindExactlyThePairsOfTheDirectTest) {
+  Mesh upright;
+  add_torus(upright, 16, 12, 2, 0.5, {0, 0, 0});
+  add_torus(upright, 16, 12, 2, 0.5, {1.5, 0.3, 0.2});
+  for (size_t v = 0; v < upright.vertex_count(); ++v) std::swap(upright.points[3 * v + 1], upright.points[3 * v + 2]);
+  const auto direct = all_pairs(upright);
+  EXPECT_GT(direct.size(), 20u);
+  EXPECT_EQ(grid_pairs(upright), direct);
+  Mesh far = upright;
+  add_torus(far, 8, 6, 1, 0.3, {3000, 2000, 1000});
+  EXPECT_EQ(all_pairs(far), direct);  // the far torus crosses nothing
+  EXPECT_EQ(grid_pairs(far), direct);
+  // Pulled through the first torus, a copy of the far one crosses it.
+  Mesh through = upright;
+  add_torus(through, 8, 6, 1, 0.3, {2, 0.1, 0});
+  add_torus(through, 8, 6, 1, 0.3, {3000, 2000, 1000});
+  const auto crossing = all_pairs(through);
+  EXPECT_GT(crossing.size(), direct.size());
+  EXPECT_EQ(grid_pairs(through), crossing);
+}
+
 TEST(MeshOverlap, OversizedTrianglesAreTestedAgainstEveryBox) {
   // A torus of 384 triangles (cells about its triangles' size), a triangle
   // 40 wide slicing through it (thousands of cells: kept out of the grid),
