@@ -106,15 +106,15 @@ bool Remover::faces_ok(const Proposal& q, const Frame& frame, const Eigen::Vecto
 }
 
 // The point of the fitted height (along the frame's normal) above the
-// centroid of the polygon's kernel, pulled in by a twentieth of each edge
-// (kernel.h) so that no new triangle starts as a sliver; none when that
-// kernel is empty.
-std::optional<Eigen::Vector3d> Remover::kernel_point(const Platelet& p, const Frame& frame,
-                                                     const Eigen::Vector3d& fitted) const {
+// kernel's point for the fitted one (kernel.h), the kernel pulled in by a
+// twentieth of each edge so that no new triangle starts as a sliver; none
+// when that kernel is empty.
+std::optional<Eigen::Vector3d> Remover::kernel_candidate(const Platelet& p, const Frame& frame,
+                                                         const Eigen::Vector3d& fitted) const {
   thread_local std::vector<Eigen::Vector2d> ring;
   ring.clear();
   for (int v : p.ring) ring.push_back(frame.uv(w_.pos[size_t(v)]));
-  const std::optional<Eigen::Vector2d> c = kernel_centroid(ring, 0.05);
+  const std::optional<Eigen::Vector2d> c = kernel_point(ring, 0.05, frame.uv(fitted));
   if (!c) return std::nullopt;
   return Eigen::Vector3d(frame.c + (*c)(0) * frame.b1 + (*c)(1) * frame.b2 + (fitted - frame.c).dot(frame.n) * frame.n);
 }
@@ -122,7 +122,7 @@ std::optional<Eigen::Vector3d> Remover::kernel_point(const Platelet& p, const Fr
 // The half-plane test, the fan and its guards for the fitted point; when it
 // fails on a closed corona, beyond the seed, T's vertices (nearest to the
 // fitted point first) are tried in its place, as an edge collapse would,
-// and then the point above the centroid of the polygon's kernel.
+// and then the point above the polygon's kernel (kernel.h).
 Outcome Remover::place_point(const Frame& frame, bool keep_xy, Proposal& q) const {
   const Platelet& p = q.platelet;
   Eigen::Vector3d candidates[5] = {q.point, w_.pos[size_t(p.a[0])], w_.pos[size_t(p.a[1])], w_.pos[size_t(p.a[2])],
@@ -135,7 +135,7 @@ Outcome Remover::place_point(const Frame& frame, bool keep_xy, Proposal& q) cons
   Outcome first = Outcome::Removed;
   for (int i = 0; i < count; ++i) {
     if (i == 4) {
-      const std::optional<Eigen::Vector3d> k = kernel_point(p, frame, fitted);
+      const std::optional<Eigen::Vector3d> k = kernel_candidate(p, frame, fitted);
       if (!k) break;
       candidates[4] = *k;
     }

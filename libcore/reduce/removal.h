@@ -72,7 +72,7 @@ class Remover {
  private:
   Outcome evaluate(Proposal& p) const;
   Outcome place_point(const Frame& frame, bool keep_xy, Proposal& p) const;
-  std::optional<Eigen::Vector3d> kernel_point(const Platelet& p, const Frame& frame, const Eigen::Vector3d& fitted) const;
+  std::optional<Eigen::Vector3d> kernel_candidate(const Platelet& p, const Frame& frame, const Eigen::Vector3d& fitted) const;
   bool half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const;
   bool domain_kept(const Platelet& p, const Eigen::Vector3d& point) const;
   bool faces_ok(const Proposal& p, const Frame& frame, const Eigen::Vector3d& point) const;

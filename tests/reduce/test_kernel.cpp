@@ -49,5 +49,32 @@ TEST(Kernel, NoKernelNoPoint) {
   EXPECT_FALSE(kernel_centroid(Ring{{0, 0}, {1, 0}, {1, 0}, {0, 1}}, 0.0).has_value());
 }
 
+// The kernel's point for a fitted point: outside the kernel, its nearest
+// point on the kernel's boundary moved a quarter of the way to the
+// kernel's centroid; inside, the centroid.
+TEST(Kernel, PointForTheFittedOneIsNearItInsideTheKernel) {
+  const Ring l{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};  // kernel [0, 1]^2, centroid (0.5, 0.5)
+  auto x = kernel_point(l, 0.0, {1.5, 1.5});                    // nearest: the corner (1, 1)
+  ASSERT_TRUE(x.has_value());
+  EXPECT_NEAR((*x)(0), 0.875, 1e-12);
+  EXPECT_NEAR((*x)(1), 0.875, 1e-12);
+  x = kernel_point(l, 0.0, {1.8, 0.4});  // nearest: (1, 0.4) on the kernel's right side
+  ASSERT_TRUE(x.has_value());
+  EXPECT_NEAR((*x)(0), 0.875, 1e-12);
+  EXPECT_NEAR((*x)(1), 0.425, 1e-12);
+  x = kernel_point(l, 0.0, {0.3, 0.2});  // inside: the centroid
+  ASSERT_TRUE(x.has_value());
+  EXPECT_NEAR((*x)(0), 0.5, 1e-12);
+  EXPECT_NEAR((*x)(1), 0.5, 1e-12);
+  const Ring u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+  EXPECT_FALSE(kernel_point(u, 0.0, {1.5, 0.5}).has_value());
+  // The kernel as a polygon: the L's is the unit square, counter-clockwise.
+  const auto k = polygon_kernel(l, 0.0);
+  ASSERT_GE(k.size(), 4u);
+  double area = 0;
+  for (size_t i = 0; i < k.size(); ++i) area += k[i](0) * k[(i + 1) % k.size()](1) - k[(i + 1) % k.size()](0) * k[i](1);
+  EXPECT_NEAR(area / 2, 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace isoform::reduce
