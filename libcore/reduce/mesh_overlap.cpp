@@ -185,7 +185,7 @@ BucketMap bucket_map(const SlabAxes& axes, size_t entries) {
   BucketMap m;
   m.axes = axes;
   const double count = double(axes.blocks[axes.u]) * double(axes.blocks[axes.v]);
-  if (count <= 4.0 * double(entries) + 4096.0) {
+  if (count <= 4.0 * double(entries) + 64.0) {
     m.dense = true;
     m.count = size_t(count);
     return m;
