@@ -196,6 +196,7 @@ Outcome Remover::evaluate(Proposal& q) const {
   for (int v : platelet.ring) {
     prefetch(&w_.pos[size_t(v)]);
     prefetch(w_.vfaces.record(size_t(v)));
+    prefetch(&w_.absolute[size_t(v)]);  // (the new faces' weights)
   }
   bool plane = false;
   const Frame frame = platelet_frame(w_, platelet, &plane);
