@@ -61,7 +61,8 @@ void Speculation::propose(const Remover& remover, const WorkMesh& w, const std::
 
 void Speculation::ComputeAhead::operator()(size_t k) const {
   const size_t i = ahead->entries_[k];
-  prefetch_ahead(*w, *ahead->order_, ahead->memo_.empty() ? nullptr : ahead->memo_.data(), i);
+  const bool recalls = !ahead->memo_.empty() && !ahead->refusals_[(ahead->pass_ - 1) & 1].empty();
+  prefetch_ahead(*w, *ahead->order_, recalls ? ahead->memo_.data() : nullptr, i);
   ahead->compute(*remover, (*ahead->order_)[i], ahead->slots_[i - ahead->begin_]);
   ahead->computed_[i - ahead->begin_].store(1, std::memory_order_release);
 }
@@ -162,10 +163,12 @@ void Speculation::compute(const Remover& remover, const QueueEntry& e, Proposal&
 // no vertex it read changed in its batch or after (a removal applied later
 // in the same batch marks its vertices with that batch's number).
 bool Speculation::recall(const QueueEntry& e, Proposal& out) const {
-  if (memo_.empty()) return false;
+  // (The last pass's refusals first: none in the first pass, whose memo
+  // would be a cache miss per face for nothing.)
+  const std::vector<Refusal>& refusals = refusals_[(pass_ - 1) & 1];
+  if (memo_.empty() || refusals.empty()) return false;
   const uint32_t k = __atomic_load_n(&memo_[size_t(e.face)], __ATOMIC_RELAXED);
   if (k == 0) return false;
-  const std::vector<Refusal>& refusals = refusals_[(pass_ - 1) & 1];
   if (k > refusals.size()) return false;
   const Refusal& r = refusals[k - 1];
   if (r.face != e.face || r.pass != pass_ - 1 || r.stamp != e.stamp) return false;
