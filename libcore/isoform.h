@@ -773,9 +773,10 @@ typedef struct isoform_reduce_options {
                             the original vertices under its triangles; 0: the seed's point */
   int vertex_fallback;   /* 1 (default): beyond the seed, when the fitted point fails the
                             half-plane test or a guard on a closed corona, try T's vertices in
-                            its place (nearest first), then the point at the fitted height
-                            above the centroid of the platelet polygon's kernel (where the
-                            polygon is star-shaped); 0: refuse as the seed does */
+                            its place (nearest first), then a point at the fitted height
+                            above the platelet polygon's kernel (where the polygon is
+                            star-shaped), as near the fitted point as the kernel allows;
+                            0: refuse as the seed does */
   int manifold_parts_only; /* 1: instead of failing on bad input, reduce the parts (triangles
                             joined by shared edges) that pass every check of isoform_reduce and
                             copy the others unchanged; keep_fraction then applies to the
@@ -817,8 +818,8 @@ typedef struct isoform_reduce_stats {
   long long parts_left_alone;    /* manifold_parts_only: parts copied unchanged (else 0) */
   long long triangles_left_alone;/* the triangles of those parts */
   long long refused_overlap;     /* a new triangle would cross another (prevent_overlap) */
-  long long kernel_points;       /* removals whose new point lies above the centroid of the
-                                    platelet polygon's kernel (vertex_fallback, tried last) */
+  long long kernel_points;       /* removals whose new point lies above the platelet
+                                    polygon's kernel (vertex_fallback, tried last) */
 } isoform_reduce_stats;
 
 /* Reduces mesh in place by iterative triangle removal (Chapter 5): the

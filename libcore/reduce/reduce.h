@@ -36,8 +36,8 @@ struct ReduceOptions {
   // triangles (Tracker::refine). Off reproduces the seed's point.
   bool refine_point = true;
   // Beyond the seed: when the fitted point fails the half-plane test or a
-  // guard on a closed corona, try T's vertices in its place, then the point
-  // above the centroid of the polygon's kernel (kernel.h).
+  // guard on a closed corona, try T's vertices in its place, then a point
+  // above the polygon's kernel (kernel.h).
   bool vertex_fallback = true;
   // Beyond the seed: reduce only the parts that pass every entry check and
   // copy the others unchanged, instead of refusing the mesh (manifold_parts.h).

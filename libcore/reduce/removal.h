@@ -30,7 +30,7 @@ struct Proposal {
   Eigen::Vector3d point{0, 0, 0};  // the point inserted
   int swaps = 0;
   bool at_vertex = false;  // the point is a vertex of T (vertex fallback)
-  bool at_kernel = false;  // the point lies above the polygon's kernel's centroid (the same)
+  bool at_kernel = false;  // the point lies above the polygon's kernel (the same)
   TrackerPending pending;
   std::vector<double> weights;  // ω (5.23) of each new face, as update_weight gives it after the commit
   // The vertices whose data it read: T's, and those of every platelet face.
