@@ -1,12 +1,15 @@
 // One removal of Algorithm 5.1 (see removal.h).
 #include "removal.h"
 
+#include "half_plane.h"
+
 #include <algorithm>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
+#include "half_plane.h"
 #include "kernel.h"
 #include "prefetch.h"
 #include "weights.h"
@@ -52,19 +55,11 @@ Remover::Remover(WorkMesh& w, const ReduceOptions& options)
 
 // Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
 // open corona it is not the centroid): p's projection onto P lies strictly
-// left of every directed edge of the platelet boundary polygon (5.17).
+// left of every directed edge of the platelet boundary polygon (5.17), and
+// the polygon goes around it once (half_plane.h).
 bool Remover::half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const {
-  const Eigen::Vector2d q = frame.uv(point);
-  const int n = int(p.ring.size());
-  for (int j = 0; j < p.link_edges(); ++j) {
-    const Eigen::Vector2d yj = frame.uv(w_.pos[size_t(p.ring[size_t(j)])]);
-    const Eigen::Vector2d yk = frame.uv(w_.pos[size_t(p.ring[size_t((j + 1) % n)])]);
-    const Eigen::Vector2d d = yk - yj;
-    const double l = -d(1) * (q(0) - yj(0)) + d(0) * (q(1) - yj(1));
-    // NOTE: relative margin, so a point on the line (to rounding) fails.
-    if (!(l > 1e-12 * d.squaredNorm())) return false;
-  }
-  return true;
+  return half_plane_once(frame.uv(point), int(p.ring.size()), p.link_edges(),
+                         [&](int j) { return frame.uv(w_.pos[size_t(p.ring[size_t(j)])]); });
 }
 
 // Graph mode: the removed boundary vertices of T lie on the two new boundary
