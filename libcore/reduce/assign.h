@@ -3,8 +3,9 @@
 // whose projection contains the vertex's projection, or comes nearest to
 // containing it (the largest smallest barycentric coordinate). Graphs
 // project along z onto (x, y); other surfaces onto the removed triangle's
-// plane P, which the new faces cover without overlap (the half-plane test
-// and the convex swaps keep the projected polygon a triangulation).
+// plane P, which the new faces cover without overlap (the half-plane test,
+// with its one turn around p, and the convex swaps keep the projected
+// polygon a triangulation: half_plane.h).
 //
 // NOTE: cheaper than the nearest face by 3D distance, which it replaces when
 // no distance tolerance asks for the tightest bound: a few multiplications
