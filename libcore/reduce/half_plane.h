@@ -9,17 +9,21 @@
 // ten thousand on the bench's CT contour) passes too, and its fan covers
 // the plane around q twice: the new triangles overlap in P, and mostly in
 // space. Each edge subtends an angle in (0, pi) at q, so the polygon's turns
-// around q are the times it passes a ray from q: a closed polygon must pass
-// the ray along +u once, an open corona's path (ring[0] .. ring[n - 1])
-// never pass the ray through ring[0], so that its fan sweeps less than a
-// turn.
-// NOTE: a fixed ray for closed polygons: each corner's side of it is
-// computed once for the two edges that meet there, so a corner on the ray
-// (to rounding) is passed once whichever side it is given. The ray through
-// ring[0] would put ring[0] on it exactly and a corner just after it
-// possibly below it by rounding: two passes, and a false refusal. (An open
-// path has no other ray to take; there the same rounding can only refuse.)
+// are counted as its passes of the ray from q along +u: an edge from below
+// q's line (v < q_v) to on or above it meets the line on the ray's side.
+// A closed polygon must pass it once; an open corona's path (ring[0] ..
+// ring[n - 1]), whose fan sweeps from its first corner to its last, never,
+// or once and end at a smaller angle than it starts (less than a turn).
+// NOTE: the sides are exact comparisons of v coordinates, each corner's made
+// once for both its edges: a corner on the line (to rounding) is passed
+// once, whichever side it is given, so the count is the polygon's winding
+// number wherever (5.17) holds with its margin. (A ray through ring[0] puts
+// that corner on it; a corner just after it, below it by rounding, counted
+// a second pass.)
 #pragma once
+
+#include <algorithm>
+#include <cmath>
 
 #include <Eigen/Core>
 
@@ -30,14 +34,10 @@ namespace isoform::reduce {
 // (n for a closed polygon, n - 1 for an open path).
 template <class UV>
 bool half_plane_once(const Eigen::Vector2d& q, int n, int edges, UV&& uv) {
-  if (n < 2) return false;
-  const bool closed = edges == n;
+  if (edges <= 0) return true;  // (no edge: nothing to test, as with (5.17) alone)
   const Eigen::Vector2d first = uv(0);
-  // The ray's direction: +u, or (open) towards ring[0].
-  const Eigen::Vector2d r = closed ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(first - q);
   Eigen::Vector2d yj = first;
-  double side_j = r(0) * (yj(1) - q(1)) - r(1) * (yj(0) - q(0));  // > 0: left of the ray's line
-  int turns = 0;
+  int passes = 0;
   for (int j = 0; j < edges; ++j) {
     const Eigen::Vector2d yk = uv((j + 1) % n);
     const Eigen::Vector2d d = yk - yj;
@@ -45,14 +45,18 @@ bool half_plane_once(const Eigen::Vector2d& q, int n, int edges, UV&& uv) {
     // rounding) fails.
     const double l = -d(1) * (q(0) - yj(0)) + d(0) * (q(1) - yj(1));
     if (!(l > 1e-12 * d.squaredNorm())) return false;
-    // Passing the ray: from right of its line to on or left of it (with q
-    // left of the edge, such an edge meets the line on the ray's side).
-    const double side_k = r(0) * (yk(1) - q(1)) - r(1) * (yk(0) - q(0));
-    turns += side_j < 0 && side_k >= 0 ? 1 : 0;
+    passes += yj(1) < q(1) && yk(1) >= q(1) ? 1 : 0;
     yj = yk;
-    side_j = side_k;
   }
-  return turns == (closed ? 1 : 0);
+  if (edges == n) return passes == 1;
+  if (passes != 1) return passes == 0;
+  // The angle of a corner around q from +u, in [0, 2 pi), on the same side
+  // of q's line as the passes took it.
+  const auto angle = [&](const Eigen::Vector2d& y) {
+    const double a = std::atan2((y(1) - q(1)) + 0.0, y(0) - q(0));  // (+ 0.0: no -0)
+    return y(1) < q(1) ? (a < 0 ? a + 2 * M_PI : a) : std::max(a, 0.0);
+  };
+  return angle(yj) < angle(first);
 }
 
 }  // namespace isoform::reduce

@@ -1,8 +1,6 @@
 // One removal of Algorithm 5.1 (see removal.h).
 #include "removal.h"
 
-#include "half_plane.h"
-
 #include <algorithm>
 
 #include <Eigen/Geometry>
