@@ -12,6 +12,7 @@
 #include "reduce.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <exception>
 #include <optional>
@@ -161,6 +162,14 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
                 const OverlapCheck& overlap, ReduceStats& stats) {
   reduce::Remover remover(w, options);
   reduce::PassQueue queue;
+  // A batch's accepted removals computed ahead, in the order accepted, and
+  // their commit, a crew item (declared before the crew: while an exception
+  // leaves, the crew waits for the items it was given).
+  std::array<const reduce::Proposal*, kBatch> pending{};
+  size_t accepted = 0, handed = 0;  // of pending: accepted, handed to the crew
+  bool committing = false;          // the crew's stretch is the batch's commits
+  int pass = 0;
+  const auto commit = [&](size_t k) { remover.commit(*pending[k], pass); };
   // (Both stopped before the measurement at the end, which is parallel.)
   std::optional<reduce::BatchCrew> crew(std::in_place);
   std::optional<reduce::Speculation> speculation(std::in_place, w.pos.size(), w.tri.size(),
@@ -174,7 +183,7 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   stats.stop_reason = 0;
   // NOTE: a batch's removals are decided one at a time in the queue's order
   // (accept: the counts and the tracker's sums) and their changes made
-  // together (commit), side by side: removals of one batch that are both
+  // by the crew (commit), side by side: removals of one batch that are both
   // accepted share no platelet vertex (the second read none that the first
   // changed, speculate.h), so their commits write disjoint data. An entry
   // whose reads an accepted removal changed waits for the commits first.
@@ -189,18 +198,34 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
   // next batch is computed ahead again. Either way each removal is computed
   // against the mesh it would meet one at a time: the same result.
   bool ahead_pays = true;
-  std::vector<const reduce::Proposal*> pending;
   while (w.live_faces > target) {
-    const int pass = ++stats.passes;
+    pass = ++stats.passes;
     remover.refit_grid();
     long long removed = 0, deferred = 0;
     bool stop = false, reached = false;
-    // (The removals computed ahead are all there first: they read the mesh.)
+    // NOTE: the helpers commit the batch's accepted removals while this
+    // thread decides the next entries (batch_crew.h, open()): the decisions
+    // read only what the commits do not write (an entry whose reads an
+    // accepted removal changed waits for every commit first, below), and
+    // the commits of accepted removals write disjoint data. Nothing may
+    // change the mesh while a removal is being computed: the commits start
+    // once all of the batch's computations are done.
+    const auto hand_over = [&] {
+      if (!committing) {
+        if (!crew->all_done()) return;  // (handed over at the next acceptance, or below)
+        crew->open(commit);
+        committing = true;
+      }
+      for (; handed < accepted; ++handed) crew->add();
+    };
+    // Every accepted removal committed (and every computation ahead done).
     const auto commit_pending = [&] {
-      ahead.settle();
-      if (pending.empty()) return;
-      crew->run(pending.size(), [&](size_t k) { remover.commit(*pending[k], pass); });
-      pending.clear();
+      if (!committing) {
+        ahead.settle();
+        if (accepted == 0) return;
+      }
+      hand_over();
+      crew->drain();
     };
     // (Isolated: waiting for its parallel work, this thread takes none of
     // the crew's helpers.)
@@ -242,9 +267,10 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         const Outcome o = remover.accept(proposal);
         if (o == Outcome::Removed) {
           ahead.applied(proposal);
-          if (speculate)
-            pending.push_back(&proposal);
-          else
+          if (speculate) {
+            pending[accepted++] = &proposal;
+            hand_over();
+          } else
             remover.commit(proposal, pass);
           ++removed;
           ++stats.removals;
@@ -261,6 +287,8 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
         }
       }
       commit_pending();
+      accepted = handed = 0;
+      committing = false;
       ahead_pays = 4 * met < end - begin;
       remover.refit_grid();  // (nothing is computed ahead between batches)
     }

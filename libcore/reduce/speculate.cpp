@@ -88,6 +88,15 @@ void Speculation::begin_serial(const WorkMesh& w, const std::vector<QueueEntry>&
   for (size_t k = 0; k < n; ++k) computed_[k].store(0, std::memory_order_relaxed);
   current_.assign(n, 0);
   entries_.clear();
+  // NOTE: the batch's faces are all over memory and this thread reads them
+  // before the helpers have anything to do: asked for all at once, their
+  // misses overlap instead of following one another.
+  for (size_t i = begin; i < end; ++i) {
+    const size_t f = size_t(order[i].face);
+    reduce::prefetch(&w.face_alive[f]);
+    reduce::prefetch(&w.face_stamp[f]);
+    reduce::prefetch(&w.face_pass[f]);
+  }
   for (size_t i = begin; i < end; ++i)
     if (is_current(w, order[i], pass)) {
       entries_.push_back(i);

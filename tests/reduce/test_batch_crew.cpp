@@ -1,13 +1,14 @@
 // The crew of the passes' parallel stretches (batch_crew.h): every item runs
 // exactly once whatever the number of threads, a stretch's items are all
-// done when finish() returns, and an exception reaches the caller and
-// leaves the crew usable.
+// done when finish() (or, for an open stretch, drain()) returns, and an
+// exception reaches the caller and leaves the crew usable.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <stdexcept>
 #include <vector>
 
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include "libcore/reduce/batch_crew.h"
@@ -71,6 +72,67 @@ TEST(BatchCrew, AnExceptionReachesTheCallerAndTheCrewGoesOn) {
     crew.run(50, [&](size_t) { after.fetch_add(1); });
     EXPECT_EQ(after.load(), 50);
   });
+}
+
+// An open stretch (open, add, drain) as the passes use it for commits:
+// items added one at a time while this thread goes on, drained now and
+// then and more added after; each runs once, and drain() returns only when
+// every item added so far is done. Then an ordinary stretch on the same crew.
+void stream_items_once(int threads) {
+  const tbb::global_control most(tbb::global_control::max_allowed_parallelism, size_t(threads));  // (more than the cores)
+  tbb::task_arena arena(threads);
+  arena.execute([] {
+    BatchCrew crew;
+    std::vector<std::atomic<int>> hits(128);
+    const auto hit = [&](size_t k) { hits[k].fetch_add(1, std::memory_order_relaxed); };
+    for (int stretch = 0; stretch < 2000; ++stretch) {
+      const size_t n = size_t(stretch * 53 % 129);
+      for (size_t k = 0; k < n; ++k) hits[k].store(0);
+      crew.open(hit);
+      for (size_t k = 0; k < n; ++k) {
+        crew.add();
+        volatile double x = 0;  // this thread's own work between items
+        for (int i = 0; i < int(k % 7) * 50; ++i) x = x + 1e-3 * double(i);
+        if (k % 31 == 30) {
+          crew.drain();
+          for (size_t j = 0; j <= k; ++j) ASSERT_EQ(hits[j].load(), 1) << "stretch " << stretch << " item " << j;
+        }
+      }
+      crew.drain();
+      for (size_t k = 0; k < n; ++k) ASSERT_EQ(hits[k].load(), 1) << "stretch " << stretch << " item " << k;
+      std::atomic<int> after{0};
+      crew.run(n / 2, [&](size_t) { after.fetch_add(1); });
+      ASSERT_EQ(after.load(), int(n / 2));
+    }
+  });
+}
+
+TEST(BatchCrew, OpenStretchRunsEveryAddedItemOnceOnOneTwoAndFourThreads) {
+  stream_items_once(1);
+  stream_items_once(2);
+  stream_items_once(4);
+}
+
+TEST(BatchCrew, AnExceptionOfAnAddedItemReachesDrain) {
+  for (int threads : {1, 3}) {
+    tbb::task_arena arena(threads);
+    arena.execute([] {
+      BatchCrew crew;
+      std::atomic<int> ran{0};
+      const auto body = [&](size_t k) {
+        ran.fetch_add(1);
+        if (k == 9) throw std::runtime_error("item 9");
+      };
+      crew.open(body);
+      // Without helpers the item runs in add(); its exception waits for drain().
+      for (int k = 0; k < 20; ++k) crew.add();
+      EXPECT_THROW(crew.drain(), std::runtime_error);
+      EXPECT_EQ(ran.load(), 20);
+      std::atomic<int> after{0};
+      crew.run(30, [&](size_t) { after.fetch_add(1); });
+      EXPECT_EQ(after.load(), 30);
+    });
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <set>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include "libcore/curvature/surface_curvature.h"
 #include "libcore/errors.h"
@@ -400,9 +401,9 @@ TEST(Reduce, CancelLeavesTheMeshUnchanged) {
 }
 
 // The reduction computes removals side by side and commits a batch's
-// accepted removals side by side (speculate.h, reduce.cpp): one thread and
-// every thread give the same mesh to the bit, with the tracker off, tracking
-// a distance tolerance, and tracking a graph's RMS.
+// accepted removals side by side (speculate.h, reduce.cpp): one thread,
+// every thread and four threads give the same mesh to the bit, with the
+// tracker off, tracking a distance tolerance, and tracking a graph's RMS.
 TEST(Reduce, OneThreadAndAllThreadsGiveTheSameBits) {
   struct Case {
     const char* name;
@@ -441,6 +442,20 @@ TEST(Reduce, OneThreadAndAllThreadsGiveTheSameBits) {
     EXPECT_EQ(s1.max_distance, s2.max_distance);
     EXPECT_EQ(s1.graph_rms, s2.graph_rms);
     if (!c.options.graph) expect_closed_manifold(all);
+    // Four threads on this machine's cores: helpers that compute and commit
+    // while others still run theirs.
+    Mesh four = c.mesh;
+    ReduceStats s4;
+    {
+      const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);  // (more than the cores)
+      tbb::task_arena arena(4);
+      arena.execute([&] { s4 = reduce(four, c.keep, c.options); });
+    }
+    EXPECT_EQ(s1.removals, s4.removals);
+    EXPECT_EQ(one.triangles, four.triangles);
+    EXPECT_EQ(one.precise_points, four.precise_points);
+    EXPECT_EQ(s1.max_distance, s4.max_distance);
+    EXPECT_EQ(s1.graph_rms, s4.graph_rms);
   }
 }
 
