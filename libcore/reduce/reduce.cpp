@@ -106,8 +106,8 @@ struct OverlapFound {};
 // curvature into *curvature_stats.
 // NOTE: the input is read where it is, not copied first (60 MB for a
 // 1M-triangle mesh with double points): only a mesh without normals is.
-WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const Progress& progress,
-                            bool* computed, CurvatureStats* curvature_stats) {
+WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const std::vector<uint8_t>& on_boundary,
+                            const Progress& progress, bool* computed, CurvatureStats* curvature_stats) {
   const Mesh* source = &mesh;
   Mesh with_normals;
   if (mesh.normals.size() != mesh.points.size()) {
@@ -131,7 +131,7 @@ WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const Pr
   const VertexCurvature& curvature = *computed ? fitted : mesh.curvature;
   *curvature_stats = curvature.stats;
   progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
-  return reduce::build_work_mesh(*source, curvature, stars);
+  return reduce::build_work_mesh(*source, curvature, stars, on_boundary);
 }
 
 void count_refusal(Outcome o, ReduceRefusals& r) {
@@ -337,13 +337,14 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   OverlapCheck overlap;
   if (!options.graph) overlap.start(mesh);
   VertexStars stars;
+  std::vector<uint8_t> on_boundary;  // per vertex, from the manifold check
   WorkMesh w;
   CurvatureStats curvature_stats;
   bool one_to_one = false;
   try {
     tbb::this_task_arena::isolate([&] {
       stars = vertex_stars(mesh);
-      reduce::validate_manifold(mesh, stars, "reduce");
+      reduce::validate_manifold(mesh, stars, "reduce", &on_boundary);
       if (options.graph) {
         reduce::validate_graph(mesh, "reduce");
         one_to_one = reduce::projects_one_to_one(mesh, stars);
@@ -356,7 +357,7 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   if (options.graph && !one_to_one) overlap.start(mesh);
   try {
     tbb::this_task_arena::isolate([&] {
-      w = prepared_work_mesh(mesh, stars, progress, &stats.curvature_computed, &curvature_stats);
+      w = prepared_work_mesh(mesh, stars, on_boundary, progress, &stats.curvature_computed, &curvature_stats);
       const long long target = (long long)std::ceil(options.keep_fraction * double(mesh.triangle_count()) - 1e-9);
       run_passes(w, options, target, progress, overlap, stats);
     });

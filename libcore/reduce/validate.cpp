@@ -135,8 +135,12 @@ bool check_edges(const Mesh& mesh, const Sink& sink) {
 
 // Around each vertex the opposite edges of its triangles form one cycle or
 // one path; more than one is a non-manifold vertex (two fans meeting).
-bool one_fan(const Mesh& mesh, const int32_t* faces, size_t count, int32_t v, std::vector<std::array<int32_t, 2>>& link) {
+// *open: a link edge starts where none ends (with one fan: a path, so the
+// vertex is on the boundary).
+bool one_fan(const Mesh& mesh, const int32_t* faces, size_t count, int32_t v, std::vector<std::array<int32_t, 2>>& link,
+             bool* open = nullptr) {
   link.clear();
+  if (open) *open = count == 1;
   for (size_t i = 0; i < count; ++i) {
     const int32_t* t = &mesh.triangles[3 * size_t(faces[i])];
     const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
@@ -148,7 +152,10 @@ bool one_fan(const Mesh& mesh, const int32_t* faces, size_t count, int32_t v, st
   for (size_t a = 0; a < link.size(); ++a) {
     bool is_target = false;
     for (const auto& e : link) is_target |= e[1] == link[a][0];
-    if (!is_target) first = a;
+    if (!is_target) {
+      first = a;
+      if (open) *open = true;
+    }
   }
   size_t visited = 1;
   int32_t at = link[first][1];
@@ -191,19 +198,26 @@ bool check_vertex_fans(const Mesh& mesh, const VertexStars& stars, const Sink& s
 // offenders otherwise.
 // NOTE: check_edges alone builds and sorts a table of all edges; this reads
 // the star table, which the working mesh's face lists are then filled from.
-bool stars_pass(const Mesh& mesh, const VertexStars& stars) {
+// With on_boundary: a flag per vertex when every vertex passes (one fan
+// each, so an open link is a path: the vertex is on the boundary), else
+// emptied.
+bool stars_pass(const Mesh& mesh, const VertexStars& stars, std::vector<uint8_t>* on_boundary) {
   const size_t nv = mesh.vertex_count();
   std::atomic<bool> pass{true};
+  if (on_boundary) on_boundary->assign(nv, 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<std::array<int32_t, 2>> link;
     for (size_t v = r.begin(); v != r.end() && pass.load(std::memory_order_relaxed); ++v) {
-      bool fine = one_fan(mesh, stars.begin(v), stars.size(v), int32_t(v), link);
+      bool open = false;
+      bool fine = one_fan(mesh, stars.begin(v), stars.size(v), int32_t(v), link, &open);
       for (size_t i = 0; i < link.size() && fine; ++i)
         for (size_t j = i + 1; j < link.size() && fine; ++j)
           fine = link[i][0] != link[j][0] && link[i][1] != link[j][1];
       if (!fine) pass.store(false, std::memory_order_relaxed);
+      if (on_boundary) (*on_boundary)[v] = open ? 1 : 0;
     }
   });
+  if (!pass.load() && on_boundary) on_boundary->clear();
   return pass.load();
 }
 
@@ -227,9 +241,10 @@ bool check_overlaps(const Mesh& mesh, const Sink& sink) {
 
 // Every check but the overlap one, after check_indices; false when sink
 // asked to stop.
-bool manifold_offences(const Mesh& mesh, const VertexStars& stars, const Sink& sink) {
+bool manifold_offences(const Mesh& mesh, const VertexStars& stars, const Sink& sink,
+                       std::vector<uint8_t>* on_boundary = nullptr) {
   return check_points(mesh, sink) && check_triangles(mesh, sink) &&
-         (stars_pass(mesh, stars) || (check_edges(mesh, sink) && check_vertex_fans(mesh, stars, sink)));
+         (stars_pass(mesh, stars, on_boundary) || (check_edges(mesh, sink) && check_vertex_fans(mesh, stars, sink)));
 }
 
 Sink throw_first(const std::string& what) {
@@ -243,8 +258,9 @@ void find_offences(const Mesh& mesh, const std::string& what, const Sink& sink) 
   if (manifold_offences(mesh, vertex_stars(mesh), sink)) check_overlaps(mesh, sink);
 }
 
-void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what) {
-  manifold_offences(mesh, stars, throw_first(what));
+void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what,
+                       std::vector<uint8_t>* on_boundary) {
+  manifold_offences(mesh, stars, throw_first(what), on_boundary);
 }
 
 void validate_no_overlap(const Mesh& mesh, const std::string& what) { check_overlaps(mesh, throw_first(what)); }

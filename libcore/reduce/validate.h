@@ -6,8 +6,10 @@
 // first offender.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "../mesh.h"
 #include "../vertex_stars.h"
@@ -37,7 +39,11 @@ void validate_input(const Mesh& mesh, const std::string& what);
 // overlap check. validate_input is these three. The overlap check needs
 // only validate_indices before it (it may run beside validate_manifold; on a
 // mesh that fails the latter its result means nothing).
-void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what);
+// validate_manifold may also say which vertices lie on the boundary (one of
+// their edges in one triangle): *on_boundary gets a flag per vertex, or
+// stays empty when the check could not tell (then compute them).
+void validate_manifold(const Mesh& mesh, const VertexStars& stars, const std::string& what,
+                       std::vector<uint8_t>* on_boundary = nullptr);
 void validate_no_overlap(const Mesh& mesh, const std::string& what);
 // Throws InvalidArgument "<what>: ..." for a triangle index that names no vertex.
 void validate_indices(const Mesh& mesh, const std::string& what);

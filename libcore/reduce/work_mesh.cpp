@@ -15,7 +15,7 @@ namespace {
 
 // A vertex is on the boundary when one of its edges has one triangle: with
 // consistent orientation, a directed edge v->x without its reverse x->v.
-bool on_boundary(const WorkMesh& w, int v) {
+bool is_on_boundary(const WorkMesh& w, int v) {
   for (int f : w.vfaces[size_t(v)]) {
     const int i = w.face_with_vertex_index(f, v);
     const int next = w.tri[size_t(f)][size_t((i + 1) % 3)];
@@ -41,7 +41,8 @@ void fill_face_lists(WorkMesh& w, const VertexStars& stars) {
 
 }  // namespace
 
-WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const VertexStars& stars) {
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const VertexStars& stars,
+                         const std::vector<uint8_t>& on_boundary) {
   WorkMesh w;
   const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
   const bool precise = mesh.precise_points.size() == 3 * nv;
@@ -60,8 +61,14 @@ WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const Verte
   w.live_faces = (long long)nt;
   fill_face_lists(w, stars);
   w.vertex_alive.assign(nv, 1);
-  w.boundary.assign(nv, 0);
-  tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = on_boundary(w, int(v)) ? 1 : 0; });
+  // NOTE: the manifold check's walk around each vertex tells this already;
+  // finding it again here was half the time of building the structure.
+  if (on_boundary.size() == nv) {
+    w.boundary.assign(on_boundary.begin(), on_boundary.end());
+  } else {
+    w.boundary.assign(nv, 0);
+    tbb::parallel_for(size_t(0), nv, [&](size_t v) { w.boundary[v] = is_on_boundary(w, int(v)) ? 1 : 0; });
+  }
   w.absolute.resize(nv);
   for (size_t v = 0; v < nv; ++v) w.absolute[v] = c.absolute[v];
   w.k1 = c.k1;

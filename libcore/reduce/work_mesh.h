@@ -48,9 +48,11 @@ struct WorkMesh {
 };
 
 // Builds the structure from a validated mesh that carries normals, with the
-// curvature of its vertices and its star table (vertex_stars.h); precise
-// points are used when present.
-WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& curvature, const VertexStars& stars);
+// curvature of its vertices, its star table (vertex_stars.h) and the flags
+// of its boundary vertices as validate_manifold gave them (computed here
+// when empty); precise points are used when present.
+WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& curvature, const VertexStars& stars,
+                         const std::vector<uint8_t>& on_boundary);
 
 // The mesh of the surviving vertices (in their order) and faces, with
 // normals, curvature (its stats: `curvature_stats` for the new count of

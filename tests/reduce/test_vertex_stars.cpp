@@ -122,5 +122,65 @@ TEST(VertexStars, TheManifoldChecksAgreeWithAPlainReference) {
   EXPECT_GT(accepted, 100);  // and meshes that pass
 }
 
+// A vertex is on the boundary when one of its edges lies in one triangle:
+// counted over an edge table, as a reference for the flags the manifold
+// check gives (the working mesh takes them instead of finding them again).
+std::vector<uint8_t> boundary_by_edges(const Mesh& m) {
+  std::map<std::pair<int32_t, int32_t>, int> uses;
+  for (size_t t = 0; t < m.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t a = m.triangles[3 * t + size_t(k)], b = m.triangles[3 * t + size_t((k + 1) % 3)];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<uint8_t> on(m.vertex_count(), 0);
+  for (const auto& [edge, count] : uses)
+    if (count == 1) on[size_t(edge.first)] = on[size_t(edge.second)] = 1;
+  return on;
+}
+
+TEST(VertexStars, TheManifoldCheckTellsTheBoundaryVertices) {
+  std::vector<Mesh> meshes;
+  meshes.push_back(plane_grid(9));  // the border's 32 vertices
+  Mesh torus;
+  add_torus(torus, 10, 8, 2, 0.7, {0, 0, 0});
+  meshes.push_back(torus);  // none
+  Mesh holes = torus;  // two triangles out: their six vertices
+  holes.triangles.erase(holes.triangles.begin() + 30, holes.triangles.begin() + 33);
+  holes.triangles.erase(holes.triangles.begin() + 90, holes.triangles.begin() + 93);
+  meshes.push_back(holes);
+  Mesh single;  // one triangle, and a vertex in none
+  single.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5};
+  single.triangles = {0, 1, 2};
+  meshes.push_back(single);
+  const size_t expected[] = {32, 0, 6, 3};
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    std::vector<uint8_t> flags;
+    validate_manifold(meshes[i], vertex_stars(meshes[i]), "test", &flags);
+    EXPECT_EQ(flags, boundary_by_edges(meshes[i])) << "mesh " << i;
+    EXPECT_EQ(size_t(std::count(flags.begin(), flags.end(), uint8_t(1))), expected[i]) << "mesh " << i;
+  }
+  // The random defects' tori that pass (a triangle or two taken out, so
+  // boundaries of every shape the sample makes).
+  std::mt19937 rng(5);
+  int open = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Mesh m = torus;
+    std::uniform_int_distribution<size_t> tri(0, m.triangle_count() - 1);
+    for (int k = 0; k <= trial % 3; ++k) {
+      const size_t t = tri(rng) % m.triangle_count();
+      m.triangles.erase(m.triangles.begin() + std::ptrdiff_t(3 * t), m.triangles.begin() + std::ptrdiff_t(3 * t + 3));
+    }
+    std::vector<uint8_t> flags;
+    try {
+      validate_manifold(m, vertex_stars(m), "test", &flags);
+    } catch (const InvalidArgument&) {
+      continue;  // (two holes meeting at a vertex: two fans)
+    }
+    EXPECT_EQ(flags, boundary_by_edges(m)) << "trial " << trial;
+    open += int(std::count(flags.begin(), flags.end(), uint8_t(1)) > 0);
+  }
+  EXPECT_GT(open, 150);
+}
+
 }  // namespace
 }  // namespace isoform::reduce
