@@ -123,10 +123,7 @@ class BatchCrew {
     ++count_;
     ticket_.fetch_add(uint64_t(1) << 16, std::memory_order_release);  // publishes item k
   }
-  void drain() {
-    take_items(generation_);
-    finish();
-  }
+  void drain() { finish(); }
   // Has an item of the stretch thrown? (finish() rethrows it.)
   bool failed() const { return failed_.load(std::memory_order_acquire); }
 
@@ -145,7 +142,13 @@ class BatchCrew {
   static uint32_t count_of(uint64_t t) { return uint32_t(t >> 16) & 0xffffu; }
   static uint32_t next_of(uint64_t t) { return uint32_t(t) & 0xffffu; }
 
+  // NOTE: takes what no helper has taken first: an open stretch's items
+  // wait for a helper, and a helper may never run (its task gets no thread
+  // when the scheduler's threads are limited after the arena was made); a
+  // crew left with items added and not drained (an exception) would wait
+  // for them forever.
   void finish_quietly() {
+    take_items(generation_);
     while (done_.load(std::memory_order_acquire) < count_) pause();
   }
 

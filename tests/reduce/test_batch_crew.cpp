@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "libcore/reduce/batch_crew.h"
@@ -133,6 +134,24 @@ TEST(BatchCrew, AnExceptionOfAnAddedItemReachesDrain) {
       EXPECT_EQ(after.load(), 30);
     });
   }
+}
+
+// A crew left with items added and not drained (as when an exception
+// leaves the passes) runs them itself where no helper can: here the
+// scheduler's threads are limited to one after the arena was made, so the
+// helper's task gets no thread.
+TEST(BatchCrew, ItemsLeftWhereNoHelperRunsRunWhenTheCrewIsLeft) {
+  std::atomic<int> warm{0};
+  tbb::parallel_for(0, 1000, [&](int) { warm.fetch_add(1); });  // the arena exists
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  std::atomic<int> ran{0};
+  const auto body = [&](size_t) { ran.fetch_add(1); };  // (outlives the crew)
+  {
+    BatchCrew crew;
+    crew.open(body);
+    for (int k = 0; k < 10; ++k) crew.add();
+  }
+  EXPECT_EQ(ran.load(), 10);
 }
 
 }  // namespace

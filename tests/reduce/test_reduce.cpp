@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <set>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "libcore/curvature/surface_curvature.h"
@@ -387,6 +390,34 @@ TEST(Reduce, InputCurvatureIsUsedAndTheDefaultIsTheCubicFit) {
   EXPECT_EQ(bare.curvature.k1, fitted.curvature.k1);
   EXPECT_NE(bare.precise_points, quartic.precise_points);
   expect_closed_manifold(bare);
+}
+
+// Cancelled in the passes, while the helpers would be committing, where no
+// helper can run (the scheduler's threads limited to one after the arena
+// was made): the reduction still ends, with Cancelled and the mesh as it was.
+TEST(Reduce, CancelInThePassesEndsWhereNoHelperRuns) {
+  std::atomic<int> warm{0};
+  tbb::parallel_for(0, 1000, [&](int) { warm.fetch_add(1); });  // the arena exists
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  Mesh m = figure510_torus(400, 200);
+  const Mesh before = m;
+  isoform_progress sink{};
+  std::atomic<bool> done{false};
+  std::thread watch([&] {  // cancels once the passes have begun
+    while (!done.load()) {
+      if (sink.stage == ISOFORM_STAGE_REDUCE && sink.fraction > 0) {
+        sink.cancel = 1;
+        return;
+      }
+      std::this_thread::yield();
+    }
+  });
+  ReduceOptions o;
+  o.keep_fraction = 0.05;
+  EXPECT_THROW(reduce_mesh(m, o, Progress(&sink)), Cancelled);
+  done = true;
+  watch.join();
+  EXPECT_EQ(m.triangles, before.triangles);
 }
 
 TEST(Reduce, CancelLeavesTheMeshUnchanged) {
