@@ -261,11 +261,16 @@ ISOFORM_API isoform_status isoform_mesh_from_arrays(const float* points, size_t 
                                                     isoform_mesh** out);
 
 /* Reads PLY (ascii or binary), OBJ or STL, chosen by extension. Coincident
- * STL corners are welded. Normals are read from PLY/OBJ when present,
- * otherwise estimated as in isoform_mesh_from_arrays. */
+ * STL corners are welded; polygons are split into triangles (concave ones by
+ * ear clipping). Normals are read from PLY/OBJ when present, otherwise
+ * estimated as in isoform_mesh_from_arrays. A PLY also gives back what
+ * isoform_mesh_save writes: curvature, colours, edges, and double-precision
+ * points, kept in double as isoform_mesh_from_arrays_f64 keeps them. */
 ISOFORM_API isoform_status isoform_mesh_load(const char* path, isoform_mesh** out);
 
-/* Writes binary PLY (x y z nx ny nz per vertex, then k1 k2 mean gauss
+/* Writes binary PLY (x y z, in double when the mesh's double-precision
+ * points would move in float by more than a millionth of its size; nx ny nz
+ * per vertex, then k1 k2 mean gauss
  * absolute d1x d1y d1z d2x d2y d2z curvature_flags when the mesh has
  * curvature, red green blue alpha when it has colours; vertex_indices and
  * part per face; an edge element when it has loose edges), OBJ (v, vn, f, l)

@@ -81,20 +81,6 @@ void store_four(VertexCurvature& c, size_t first, const VertexFitResult* r) {
   store_lanes(c, first, lanes);
 }
 
-void count_flags(VertexCurvature& c) {
-  CurvatureStats& s = c.stats;
-  s.vertices = (long long)c.flags.size();
-  for (uint8_t f : c.flags) {
-    s.boundary += (f & kCurvatureBoundary) != 0;
-    s.widened += (f & kCurvatureWidened) != 0;
-    s.lower_order += (f & kCurvatureLowerOrder) != 0;
-    s.nonmanifold += (f & kCurvatureNonmanifold) != 0;
-    s.isolated += (f & kCurvatureIsolated) != 0;
-    s.failed += (f & kCurvatureFailed) != 0;
-    s.normal_repaired += (f & kCurvatureNormalRepaired) != 0;
-  }
-}
-
 }  // namespace
 
 void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const Progress& progress,
@@ -181,7 +167,7 @@ void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const 
     tbb::parallel_for(all, body);
   }
   if (stop) throw Cancelled("curvature: cancelled");
-  count_flags(c);
+  count_curvature_flags(c);
 }
 
 void compute_curvature(Mesh& mesh, const CurvatureOptions& options, const Progress& progress) {

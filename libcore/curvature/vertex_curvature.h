@@ -41,4 +41,19 @@ struct VertexCurvature {
   bool empty() const { return k1.empty(); }
 };
 
+// The stats' vertex and flag counts from c.flags (the method is left as it is).
+inline void count_curvature_flags(VertexCurvature& c) {
+  CurvatureStats& s = c.stats;
+  s.vertices = (long long)c.flags.size();
+  for (uint8_t f : c.flags) {
+    s.boundary += (f & kCurvatureBoundary) != 0;
+    s.widened += (f & kCurvatureWidened) != 0;
+    s.lower_order += (f & kCurvatureLowerOrder) != 0;
+    s.nonmanifold += (f & kCurvatureNonmanifold) != 0;
+    s.isolated += (f & kCurvatureIsolated) != 0;
+    s.failed += (f & kCurvatureFailed) != 0;
+    s.normal_repaired += (f & kCurvatureNormalRepaired) != 0;
+  }
+}
+
 }  // namespace isoform

@@ -46,6 +46,12 @@ inline void store_float_le(unsigned char* p, float value) {
   store_little_endian(p, float_bits(value), 4);
 }
 
+inline void store_double_le(unsigned char* p, double value) {
+  uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  store_little_endian(p, bits, 8);
+}
+
 inline void store_int32_le(unsigned char* p, int32_t value) {
   store_little_endian(p, static_cast<uint32_t>(value), 4);
 }

@@ -22,4 +22,10 @@ void write_ply(const Mesh& mesh, AtomicFile& file);
 void write_obj(const Mesh& mesh, AtomicFile& file);
 void write_stl(const Mesh& mesh, AtomicFile& file);
 
+// Points are written as float unless the mesh has double-precision points
+// that rounding to float would move by more than a millionth of the mesh's
+// extent (a scan far from the origin, say): then PLY and OBJ write those,
+// so that what was read in double is not lost.
+bool points_need_double(const Mesh& mesh);
+
 }  // namespace isoform::meshio

@@ -13,13 +13,16 @@ namespace isoform {
 
 // Writes mesh to path in the format named by its extension (.ply, .obj, .stl;
 // case-insensitive):
-// - PLY: binary little endian; float x y z (and nx ny nz when mesh.normals is
-//   not empty, uchar red green blue alpha when mesh.colors is not empty) per
+// - PLY: binary little endian; float x y z (double when float would move
+//   the mesh's double-precision points: formats.h, points_need_double), then
+//   nx ny nz when mesh.normals is not empty, the curvature (k1 k2 mean gauss
+//   absolute d1x d1y d1z d2x d2y d2z, uchar curvature_flags) when the mesh
+//   has it, uchar red green blue alpha when mesh.colors is not empty, per
 //   vertex; uchar/int vertex_indices (and int part when mesh.parts is not
 //   empty) per face; an element edge (int vertex1 vertex2) when mesh.edges
 //   is not empty.
-// - OBJ: v, vn (when normals exist), 1-based f and l lines; parts and colours
-//   are not kept.
+// - OBJ: v (double precision as for PLY), vn (when normals exist), 1-based f
+//   and l lines; parts, curvature and colours are not kept.
 // - STL: binary, one facet normal computed from each triangle; vertex normals
 //   and parts are not kept.
 // The save is atomic: the data go to PATH.tmp-<random> in the same directory,
@@ -33,10 +36,15 @@ void save_mesh(const Mesh& mesh, const std::string& path);
 // Returns points and triangles, and normals when the file gives one per
 // vertex (else normals stay empty); a PLY face property `part`, as save_mesh
 // writes it, fills parts and part_count. Neighbours, parts of other files and
-// statistics are not computed.
-// - PLY: ascii, binary little or big endian; any scalar types; other elements
-//   and properties are skipped. Polygons are split into triangle fans.
-// - OBJ: v, vn, f (a, a/b, a/b/c, a//c, negative indices); polygons fanned.
+// statistics are not computed. Polygons are split into triangles
+// (polygon_split.h: a convex one into the fan from its first corner).
+// - PLY: ascii, binary little or big endian; any scalar types. Everything
+//   save_mesh writes is read back, so that a PLY written by isoform and saved
+//   again gives the same bytes: double x y z also into precise_points, the
+//   curvature group (only when all of it is there), the colour (red green
+//   blue, alpha when there, else opaque; floating-point colours from 0 to
+//   1), the edge element. Other elements and properties are skipped.
+// - OBJ: v, vn, f (a, a/b, a/b/c, a//c, negative indices).
 //   Normals are kept only when every vertex has exactly one.
 // - STL: binary or ascii; exactly equal corners are welded into one vertex.
 // Throws InvalidArgument for an unknown extension, IoError when the file

@@ -1,5 +1,6 @@
 // Reading Wavefront OBJ: only v, vn and f describe the surface; texture
 // coordinates, groups, materials and smoothing groups are passed over.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -7,6 +8,7 @@
 
 #include "../errors.h"
 #include "formats.h"
+#include "polygon_split.h"
 #include "text_cursor.h"
 
 namespace isoform::meshio {
@@ -40,6 +42,7 @@ class ObjParser {
   std::vector<int32_t> normal_of_;   // per vertex: its vn, or -1 while it has none
   bool normals_consistent_ = true;
   std::vector<Corner> corners_;      // of the face being read
+  std::vector<int32_t> face_vertices_;  // the vertices of corners_
 };
 
 Mesh ObjParser::run() {
@@ -76,7 +79,8 @@ void ObjParser::read_triple(std::vector<float>& out, const char* what) {
   }
 }
 
-// A polygon is split into a fan from its first corner.
+// A polygon is split into triangles by split_polygon (a convex one into the
+// fan from its first corner).
 void ObjParser::read_face() {
   corners_.clear();
   for (std::string_view token = cursor_.token_on_line(); !token.empty() && token[0] != '#';
@@ -87,10 +91,12 @@ void ObjParser::read_face() {
     fail("a face has " + std::to_string(corners_.size()) + " corners; it needs at least 3");
   }
   for (const Corner& corner : corners_) assign_normal(corner);
-  for (size_t k = 1; k + 1 < corners_.size(); ++k) {
-    mesh_.triangles.insert(mesh_.triangles.end(),
-                           {corners_[0].vertex, corners_[k].vertex, corners_[k + 1].vertex});
-  }
+  face_vertices_.clear();
+  for (const Corner& corner : corners_) face_vertices_.push_back(corner.vertex);
+  split_polygon(face_vertices_, [this](int32_t vertex) {
+    const float* p = &mesh_.points[3 * size_t(vertex)];
+    return std::array<double, 3>{p[0], p[1], p[2]};
+  }, mesh_.triangles);
 }
 
 // Forms "v", "v/t", "v/t/n" and "v//n"; the texture index is not used.

@@ -1,7 +1,8 @@
 // Writing Wavefront OBJ. Numbers are written in their shortest form that
 // reads back to the same float (std::to_chars), so a save and load of OBJ
 // keeps the points bit for bit, and the "C" locale is used whatever the
-// process's locale says.
+// process's locale says. Points that need double precision
+// (points_need_double) are written in the shortest form of the double.
 #include <charconv>
 #include <string>
 #include <vector>
@@ -18,7 +19,8 @@ void append_number(std::string& line, Number value) {
 }
 
 // One "keyword x y z" line per triple; the line's storage is reused.
-void write_triples(AtomicFile& file, const char* keyword, const std::vector<float>& values) {
+template <class Number>
+void write_triples(AtomicFile& file, const char* keyword, const std::vector<Number>& values) {
   std::string line;
   for (size_t i = 0; i + 2 < values.size(); i += 3) {
     line = keyword;
@@ -69,7 +71,10 @@ void write_lines(const Mesh& mesh, AtomicFile& file) {
 
 void write_obj(const Mesh& mesh, AtomicFile& file) {
   file.write(std::string_view("# isoform\n"));
-  write_triples(file, "v", mesh.points);
+  if (points_need_double(mesh))
+    write_triples(file, "v", mesh.precise_points);
+  else
+    write_triples(file, "v", mesh.points);
   write_triples(file, "vn", mesh.normals);
   write_faces(mesh, file);
   write_lines(mesh, file);

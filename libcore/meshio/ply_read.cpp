@@ -3,6 +3,7 @@
 // face, and properties the Mesh has no place for, are read and dropped so
 // that the position in the data stays right.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -14,13 +15,24 @@
 #include "formats.h"
 #include "ply_header.h"
 #include "ply_values.h"
+#include "polygon_split.h"
 
 namespace isoform::meshio {
 namespace {
 
-// Slots of a vertex property in the Mesh: 0..2 the point, 3..5 the normal.
-constexpr const char* kVertexSlots[] = {"x", "y", "z", "nx", "ny", "nz"};
+// Slots of a vertex property in the Mesh, in groups as save_mesh writes
+// them: the point, the normal, the curvature (Chapter 4), the colour. A group
+// other than the point is taken only when all its properties are there
+// (alpha may be missing: opaque).
+constexpr const char* kVertexSlots[] = {"x",   "y",   "z",   "nx",  "ny",   "nz",   "k1",
+                                        "k2",  "mean", "gauss", "absolute", "d1x", "d1y", "d1z",
+                                        "d2x", "d2y", "d2z", "curvature_flags", "red", "green", "blue",
+                                        "alpha"};
+constexpr int kNormal = 3, kCurvature = 6, kFlags = 17, kColour = 18, kAlpha = 21, kSlotCount = 22;
 constexpr int kNoSlot = -1;
+
+// The group a slot belongs to, by its first slot.
+int group_of(int slot) { return slot < kNormal ? 0 : slot < kCurvature ? kNormal : slot < kColour ? kCurvature : kColour; }
 
 bool to_float(double value, float& out) {
   if (!std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max()) return false;
@@ -50,11 +62,13 @@ class PlyDecoder {
  private:
   std::vector<int> vertex_slots(const PlyElement& element) const;
   void read_vertices(const PlyElement& element);
+  void store_vertex(const std::vector<int>& slots, const double* value, bool precise);
+  void read_edges(const PlyElement& element);
   void read_faces(const PlyElement& element);
   int face_list(const PlyElement& element) const;
   void read_corners(const PlyProperty& property);
   int32_t read_part(const PlyProperty& property);
-  void append_fan(int32_t part, bool has_part);
+  void append_polygon(int32_t part, bool has_part);
   size_t reservation(const PlyElement& element, size_t values_per_item) const;
   void skip_element(const PlyElement& element);
   double read_property(const PlyProperty& property);
@@ -89,9 +103,17 @@ Mesh PlyDecoder<Values>::run() {
       read_vertices(element);
     } else if (&element == faces) {
       read_faces(element);
+    } else if (element.name == "edge" && element.find("vertex1") >= 0 && element.find("vertex2") >= 0) {
+      read_edges(element);
     } else {
       skip_element(element);
     }
+  }
+  // NOTE: data beyond what the header declares would be dropped without a
+  // word (a header that counts too few faces loses them): refused instead.
+  if (!values_.at_end()) {
+    throw FormatError(path_ + ": holds more data after its last element (" + header_.elements.back().name +
+                      ") than its header declares");
   }
   if (!mesh_.parts.empty()) {
     mesh_.part_count = *std::max_element(mesh_.parts.begin(), mesh_.parts.end()) + 1;
@@ -99,46 +121,116 @@ Mesh PlyDecoder<Values>::run() {
   return std::move(mesh_);
 }
 
-// Normals are taken only when all three components are there.
+// The slot of each vertex property, or kNoSlot; the point's three are
+// required, the other groups taken whole or not at all.
 template <class Values>
 std::vector<int> PlyDecoder<Values>::vertex_slots(const PlyElement& element) const {
   std::vector<int> slots(element.properties.size(), kNoSlot);
-  bool normals = true;
-  for (int slot = 0; slot < 6; ++slot) {
-    int found = element.find(kVertexSlots[slot]);
-    if (found >= 0 && !element.properties[size_t(found)].is_list) {
-      slots[size_t(found)] = slot;
-    } else if (slot < 3) {
-      throw FormatError(path_ + ": the vertex element has no scalar property " +
-                        kVertexSlots[slot]);
-    } else {
-      normals = false;
+  bool complete[kSlotCount] = {};  // per group, by its first slot
+  for (int g : {kNormal, kCurvature, kColour}) complete[g] = true;
+  std::vector<int> found(kSlotCount, -1);
+  for (int slot = 0; slot < kSlotCount; ++slot) {
+    const int k = element.find(kVertexSlots[slot]);
+    if (k >= 0 && !element.properties[size_t(k)].is_list) {
+      found[size_t(slot)] = k;
+    } else if (slot < kNormal) {
+      throw FormatError(path_ + ": the vertex element has no scalar property " + kVertexSlots[slot]);
+    } else if (slot != kAlpha) {
+      complete[group_of(slot)] = false;
     }
   }
-  if (!normals) std::replace_if(slots.begin(), slots.end(), [](int s) { return s >= 3; }, kNoSlot);
+  for (int slot = 0; slot < kSlotCount; ++slot)
+    if (found[size_t(slot)] >= 0 && (slot < kNormal || complete[group_of(slot)])) slots[size_t(found[size_t(slot)])] = slot;
   return slots;
 }
 
 template <class Values>
 void PlyDecoder<Values>::read_vertices(const PlyElement& element) {
-  std::vector<int> slots = vertex_slots(element);
-  bool normals = std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 3; }) == 3;
-  size_t reserve = reservation(element, element.properties.size());
+  const std::vector<int> slots = vertex_slots(element);
+  bool has[kSlotCount] = {};
+  for (int s : slots)
+    if (s != kNoSlot) has[s] = true;
+  // Double-precision points are kept as well as their floats (the
+  // reduction and the curvature fits read them).
+  bool precise = true;
+  for (size_t k = 0; k < slots.size(); ++k)
+    if (slots[k] >= 0 && slots[k] < kNormal) precise &= element.properties[k].type == PlyType::float64;
+  const size_t reserve = reservation(element, element.properties.size());
   mesh_.points.reserve(3 * reserve);
-  if (normals) mesh_.normals.reserve(3 * reserve);
+  if (precise) mesh_.precise_points.reserve(3 * reserve);
+  if (has[kNormal]) mesh_.normals.reserve(3 * reserve);
+  if (has[kColour]) mesh_.colors.reserve(4 * reserve);
+  double value[kSlotCount];
   for (uint64_t i = 0; i < element.count; ++i) {
     start(element, i);
-    float slot_values[6] = {};
+    std::fill(value, value + kSlotCount, 255.0);  // (an absent alpha: opaque)
     for (size_t k = 0; k < slots.size(); ++k) {
-      double read = read_property(element.properties[k]);
+      const double read = read_property(element.properties[k]);
       if (slots[k] == kNoSlot) continue;
-      if (!to_float(read, slot_values[slots[k]])) {
-        fail("has " + element.properties[k].name + " = " + number_text(read) +
-             ", which is not a finite float");
-      }
+      const PlyType type = element.properties[k].type;
+      // Colours of a floating-point type run from 0 to 1.
+      const bool unit_colour = slots[k] >= kColour && (type == PlyType::float32 || type == PlyType::float64);
+      value[slots[k]] = unit_colour ? read * 255.0 : read;
     }
-    mesh_.points.insert(mesh_.points.end(), slot_values, slot_values + 3);
-    if (normals) mesh_.normals.insert(mesh_.normals.end(), slot_values + 3, slot_values + 6);
+    store_vertex(slots, value, precise);
+  }
+  // (The method that made it is not in the file.)
+  if (has[kCurvature]) count_curvature_flags(mesh_.curvature);
+}
+
+// One vertex's values, checked: floats finite, flags and colours whole
+// numbers from 0 to 255.
+template <class Values>
+void PlyDecoder<Values>::store_vertex(const std::vector<int>& slots, const double* value, bool precise) {
+  const bool normals = std::count(slots.begin(), slots.end(), kNormal) > 0;
+  const bool curvature = std::count(slots.begin(), slots.end(), kCurvature) > 0;
+  const bool colours = std::count(slots.begin(), slots.end(), kColour) > 0;
+  float f[kSlotCount] = {};
+  uint8_t byte[kSlotCount] = {};
+  for (int s = 0; s < kSlotCount; ++s) {
+    if (s >= kNormal && !(group_of(s) == kNormal ? normals : group_of(s) == kCurvature ? curvature : colours)) continue;
+    if (s == kFlags || s >= kColour) {
+      const double v = s >= kColour ? std::round(value[s]) : value[s];
+      if (!(v >= 0 && v <= 255 && v == std::floor(v)))
+        fail("has " + std::string(kVertexSlots[s]) + " = " + number_text(value[s]) + ", which is not a whole number from 0 to 255");
+      byte[s] = uint8_t(v);
+    } else if (!to_float(value[s], f[s])) {
+      fail("has " + std::string(kVertexSlots[s]) + " = " + number_text(value[s]) + ", which is not a finite float");
+    }
+  }
+  mesh_.points.insert(mesh_.points.end(), f, f + 3);
+  if (precise) mesh_.precise_points.insert(mesh_.precise_points.end(), value, value + 3);
+  if (normals) mesh_.normals.insert(mesh_.normals.end(), f + kNormal, f + kNormal + 3);
+  if (curvature) {
+    VertexCurvature& c = mesh_.curvature;
+    c.k1.push_back(f[6]);
+    c.k2.push_back(f[7]);
+    c.mean.push_back(f[8]);
+    c.gauss.push_back(f[9]);
+    c.absolute.push_back(f[10]);
+    c.d1.insert(c.d1.end(), f + 11, f + 14);
+    c.d2.insert(c.d2.end(), f + 14, f + 17);
+    c.flags.push_back(byte[kFlags]);
+  }
+  if (colours) mesh_.colors.insert(mesh_.colors.end(), byte + kColour, byte + kColour + 4);
+}
+
+// Loose line segments (vertex1, vertex2), as save_mesh writes them.
+template <class Values>
+void PlyDecoder<Values>::read_edges(const PlyElement& element) {
+  const int first = element.find("vertex1"), second = element.find("vertex2");
+  mesh_.edges.reserve(2 * reservation(element, element.properties.size()));
+  for (uint64_t i = 0; i < element.count; ++i) {
+    start(element, i);
+    int32_t ends[2] = {0, 0};
+    for (size_t k = 0; k < element.properties.size(); ++k) {
+      const double v = read_property(element.properties[k]);
+      if (int(k) != first && int(k) != second) continue;
+      if (!(v >= 0 && v < double(vertex_count_) && v == std::floor(v)))
+        fail("refers to vertex " + number_text(v) + " but there are " + std::to_string(vertex_count_) + " vertices");
+      ends[int(k) == first ? 0 : 1] = int32_t(v);
+    }
+    mesh_.edges.insert(mesh_.edges.end(), ends, ends + 2);
   }
 }
 
@@ -162,7 +254,7 @@ void PlyDecoder<Values>::read_faces(const PlyElement& element) {
         read_property(property);
       }
     }
-    append_fan(part_value, part >= 0);
+    append_polygon(part_value, part >= 0);
   }
 }
 
@@ -202,14 +294,26 @@ int32_t PlyDecoder<Values>::read_part(const PlyProperty& property) {
   return static_cast<int32_t>(part);
 }
 
-// A convex polygon's fan from its first corner; each triangle keeps the
-// polygon's part.
+// The polygon's triangles by split_polygon (a convex one's fan from its first
+// corner); each triangle keeps the polygon's part. When the face element
+// comes before the vertex element in the header, the positions are not read
+// yet, and every polygon is split into the fan from its first corner.
 template <class Values>
-void PlyDecoder<Values>::append_fan(int32_t part, bool has_part) {
-  for (size_t k = 1; k + 1 < corners_.size(); ++k) {
-    mesh_.triangles.insert(mesh_.triangles.end(), {corners_[0], corners_[k], corners_[k + 1]});
-    if (has_part) mesh_.parts.push_back(part);
+void PlyDecoder<Values>::append_polygon(int32_t part, bool has_part) {
+  size_t before = mesh_.triangles.size();
+  if (mesh_.points.size() == 3 * vertex_count_) {
+    const bool precise = mesh_.precise_points.size() == mesh_.points.size();
+    split_polygon(corners_, [this, precise](int32_t vertex) {
+      const size_t i = 3 * size_t(vertex);
+      if (precise) return std::array<double, 3>{mesh_.precise_points[i], mesh_.precise_points[i + 1], mesh_.precise_points[i + 2]};
+      return std::array<double, 3>{mesh_.points[i], mesh_.points[i + 1], mesh_.points[i + 2]};
+    }, mesh_.triangles);
+  } else {
+    for (size_t k = 1; k + 1 < corners_.size(); ++k) {
+      mesh_.triangles.insert(mesh_.triangles.end(), {corners_[0], corners_[k], corners_[k + 1]});
+    }
   }
+  if (has_part) mesh_.parts.insert(mesh_.parts.end(), (mesh_.triangles.size() - before) / 3, part);
 }
 
 // How many items of element to reserve room for: the header's count, but no

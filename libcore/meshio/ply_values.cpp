@@ -64,6 +64,12 @@ bool PlyBinaryValues::read(PlyType type, double& out) {
   return true;
 }
 
+bool PlyBinaryValues::at_end() const {
+  for (size_t i = pos_; i < bytes_.size(); ++i)
+    if (bytes_[i] != '\n' && bytes_[i] != '\r' && bytes_[i] != ' ') return false;
+  return true;
+}
+
 bool PlyAsciiValues::read(PlyType type, double& out) {
   std::string_view token = cursor_.token();
   if (token.empty()) {

@@ -23,6 +23,8 @@ class PlyBinaryValues {
   bool read(PlyType type, double& out);
   // Why the last read failed.
   std::string problem() const { return "the file ends early (truncated?)"; }
+  // Nothing but line ends or spaces left?
+  bool at_end() const;
 
  private:
   std::string_view bytes_;
@@ -40,6 +42,11 @@ class PlyAsciiValues {
   bool read(PlyType type, double& out);
   // Why the last read failed, with the line.
   std::string problem() const { return problem_; }
+  // Nothing but whitespace left?
+  bool at_end() const {
+    TextCursor rest = cursor_;
+    return rest.token().empty();
+  }
 
  private:
   TextCursor cursor_;

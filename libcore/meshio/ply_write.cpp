@@ -43,14 +43,15 @@ std::vector<VertexProperty> vertex_properties(const Mesh& mesh) {
   return out;
 }
 
-std::string header_text(const Mesh& mesh, const std::vector<VertexProperty>& properties) {
+std::string header_text(const Mesh& mesh, const std::vector<VertexProperty>& properties, bool doubles) {
   bool parts = !mesh.parts.empty();
   std::string text =
       "ply\n"
       "format binary_little_endian 1.0\n"
       "comment isoform\n";
   text += "element vertex " + std::to_string(mesh.vertex_count()) + "\n";
-  text += "property float x\nproperty float y\nproperty float z\n";
+  text += doubles ? "property double x\nproperty double y\nproperty double z\n"
+                 : "property float x\nproperty float y\nproperty float z\n";
   for (const VertexProperty& p : properties)
     for (const char* name : p.names) text += std::string("property ") + p.type + " " + name + "\n";
   text += "element face " + std::to_string(mesh.triangle_count()) + "\n";
@@ -78,14 +79,20 @@ size_t store_property(const VertexProperty& p, size_t v, unsigned char* record, 
   return offset;
 }
 
-void write_vertices(const Mesh& mesh, const std::vector<VertexProperty>& properties,
+void write_vertices(const Mesh& mesh, const std::vector<VertexProperty>& properties, bool doubles,
                     AtomicFile& file) {
-  size_t record_size = 12;
+  const size_t point_size = doubles ? 24 : 12;
+  size_t record_size = point_size;
   for (const VertexProperty& p : properties) record_size += p.size() * p.names.size();
   std::vector<unsigned char> record(record_size);
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    for (size_t k = 0; k < 3; ++k) store_float_le(record.data() + 4 * k, mesh.points[3 * v + k]);
-    size_t offset = 12;
+    for (size_t k = 0; k < 3; ++k) {
+      if (doubles)
+        store_double_le(record.data() + 8 * k, mesh.precise_points[3 * v + k]);
+      else
+        store_float_le(record.data() + 4 * k, mesh.points[3 * v + k]);
+    }
+    size_t offset = point_size;
     for (const VertexProperty& p : properties) offset = store_property(p, v, record.data(), offset);
     file.write(record.data(), record_size);
   }
@@ -115,8 +122,9 @@ void write_edges(const Mesh& mesh, AtomicFile& file) {
 
 void write_ply(const Mesh& mesh, AtomicFile& file) {
   const std::vector<VertexProperty> properties = vertex_properties(mesh);
-  file.write(header_text(mesh, properties));
-  write_vertices(mesh, properties, file);
+  const bool doubles = points_need_double(mesh);
+  file.write(header_text(mesh, properties, doubles));
+  write_vertices(mesh, properties, doubles, file);
   write_faces(mesh, file);
   write_edges(mesh, file);
 }

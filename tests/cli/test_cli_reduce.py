@@ -234,6 +234,76 @@ def case_keep_all_is_bit_identical(tmp):
         expect(a.read() == b.read(), "--keep 100% did not write the input's bytes")
 
 
+def case_curvature_in_the_file(tmp):
+    """A PLY that carries curvature (written by `isoform curvature`) comes back byte for byte with
+    --keep 100%, and the reduction takes its curvature instead of computing it again."""
+    mesh = os.path.join(tmp, "sphere.ply")
+    run("contour", data("sphere.vdb"), "-q", "-o", mesh)
+    curved = os.path.join(tmp, "curved.ply")
+    run("curvature", mesh, "--method", "seed", "-q", "-o", curved)
+    copy = os.path.join(tmp, "copy.ply")
+    run("reduce", curved, "--keep", "100%", "-o", copy)
+    with open(curved, "rb") as a, open(copy, "rb") as b:
+        expect(a.read() == b.read(), "--keep 100% of a file with curvature did not write its bytes")
+    summary, _ = run_json("reduce", curved, "--keep", "20%", "-o", os.path.join(tmp, "small.ply"))
+    expect(summary["curvature_computed"] is False, f"the file's curvature was not used: {summary}")
+    summary, _ = run_json("reduce", mesh, "--keep", "20%", "-o", os.path.join(tmp, "small2.ply"))
+    expect(summary["curvature_computed"] is True, f"{summary}")
+
+
+def write_double_torus_ply(path, offset, rings=24, sides=12):
+    """A torus (radii 2 and 0.7) at x = offset, its points as doubles in a binary PLY."""
+    import math
+    points, faces = [], []
+    for i in range(rings):
+        for j in range(sides):
+            u, v = 2 * math.pi * i / rings, 2 * math.pi * j / sides
+            r = 2 + 0.7 * math.cos(v)
+            points.append((offset + r * math.cos(u), r * math.sin(u), 0.7 * math.sin(v)))
+    for i in range(rings):
+        for j in range(sides):
+            a, b = i * sides + j, ((i + 1) % rings) * sides + j
+            c, d = ((i + 1) % rings) * sides + (j + 1) % sides, i * sides + (j + 1) % sides
+            faces += [(a, b, c), (a, c, d)]
+    header = ("ply\nformat binary_little_endian 1.0\n"
+              f"element vertex {len(points)}\nproperty double x\nproperty double y\nproperty double z\n"
+              f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    with open(path, "wb") as f:
+        f.write(header.encode())
+        for p in points:
+            f.write(struct.pack("<3d", *p))
+        for t in faces:
+            f.write(struct.pack("<B3i", 3, *t))
+    return points, faces
+
+
+def case_double_points_far_from_the_origin(tmp):
+    """Ten million units from the origin floats are 1 apart: a double-precision PLY is reduced in
+    double (no false overlap), closed with the same genus, and written in double."""
+    path = os.path.join(tmp, "far.ply")
+    points, faces = write_double_torus_ply(path, 1e7)
+    out = os.path.join(tmp, "small.obj")
+    summary, _ = run_json("reduce", path, "--keep", "30%", "-o", out)
+    small_points, _, small = base.read_obj(out)
+    # Floats there are whole numbers: fractions show the points went out in double.
+    expect(sum(p[0] != round(p[0]) for p in small_points) > len(small_points) // 2,
+           "the far torus was written in float")
+    base.check_closed(small, len(small_points), out)
+    expect(euler(small_points, small) == 0, "the torus lost its genus")
+    expect(all(abs(p[0] - 1e7) < 3 and abs(p[1]) < 3 and abs(p[2]) < 1 for p in small_points),
+           "points moved off the torus")
+
+
+def case_concave_polygon(tmp):
+    """An OBJ face that is a concave pentagon is split without overlap and passes the checks."""
+    path = os.path.join(tmp, "notch.obj")
+    with open(path, "w") as f:
+        f.write("v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 0.5 0\nv 0 2 0\nf 2 3 4 5 1\n")
+    out = os.path.join(tmp, "copy.obj")
+    summary, _ = run_json("reduce", path, "--keep", "100%", "-o", out)
+    expect(summary["triangles_before"] == 3, f"{summary}")
+
+
 def case_sphere_contour_passes(tmp):
     """A real contour does not overlap itself: sphere.vdb's reduces."""
     mesh = os.path.join(tmp, "sphere.obj")
@@ -355,8 +425,10 @@ def case_kernel_points(tmp):
 
 GROUPS = {
     "reduce_cli": [case_help, case_keep_all_is_a_copy, case_single_triangle, case_bad_input, case_boundary,
-                   case_overlap, case_manifold_parts, case_nan_ply, case_graph],
+                   case_overlap, case_manifold_parts, case_nan_ply, case_graph,
+                   case_double_points_far_from_the_origin, case_concave_polygon],
     "reduce_contours": [case_cube_reduced_90, case_contour_reduce, case_keep_all_is_bit_identical,
+                        case_curvature_in_the_file,
                         case_sphere_contour_passes, case_no_overlap, case_kernel_points],
 }
 

@@ -202,6 +202,18 @@ TEST(Ply, FaceIndexOutOfRange) {
             dir.file("range.ply") + ": face 1 refers to vertex 9 but there are 3 vertices");
 }
 
+TEST(Ply, BinaryDataBeyondTheHeaderIsRefusedTrailingLineEndsAreNot) {
+  TempDir dir;
+  save_mesh(octahedron(), dir.file("o.ply"));
+  const std::string bytes = read_file(dir.file("o.ply"));
+  write_file(dir.file("nl.ply"), bytes + "\r\n");
+  EXPECT_EQ(load_mesh(dir.file("nl.ply")).triangles, octahedron().triangles);
+  // One face more than the header counts (its 13 bytes).
+  write_file(dir.file("more.ply"), bytes + bytes.substr(bytes.size() - 13));
+  const std::string message = format_error_of(dir.file("more.ply"));
+  EXPECT_NE(message.find("more.ply: holds more data after its last element (face)"), std::string::npos) << message;
+}
+
 TEST(Ply, TextFileIsNotPly) {
   TempDir dir;
   write_file(dir.file("notes.ply"), "shopping list\neggs\n");
@@ -231,6 +243,8 @@ TEST(Ply, MalformedAsciiFilesAreFormatErrors) {
        "face 0: the file ends early (truncated?)"},
       {"count.ply", ascii_triangle("property float z\n", "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n"),
        "\"300\" is not a uchar"},
+      {"more.ply", ascii_triangle("property float z\n", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+       "more.ply: holds more data after its last element (face) than its header declares"},
       {"header.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", "no end_header line"},
       {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty half x\nend_header\n",
        "header line 4: unknown property type \"half\""},
