@@ -10,6 +10,7 @@
 #include <string>
 
 #include <CLI/App.hpp>
+#include <CLI/Validators.hpp>
 
 #include "isoform.h"
 
@@ -49,6 +50,10 @@ isoform_grid_info grid_info(const isoform_volume* volume, int index);
 // The index of grid `name` ("" = the first scalar grid).
 int find_grid(const isoform_volume* volume, const std::string& name);
 isoform_mesh_stats mesh_stats(const isoform_mesh* mesh);
+
+// A check of an option's text: a finite number, 0 or more; its message
+// quotes the text ("'abc' is not a number", "'-1' is negative ...").
+CLI::Validator non_negative_number();
 
 // A subcommand and what runs it once its arguments are parsed. run throws
 // Failure (or another std::exception) on error.

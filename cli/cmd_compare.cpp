@@ -182,7 +182,7 @@ Command add_compare_command(CLI::App& parent) {
   app->add_option("--isolation", a->isolation, "Loop adaptive isolation level (default 6)")->check(CLI::Range(1, 10));
   app->add_flag("--smooth-corners", a->smooth_corners, "Loop: smooth valence-2 boundary corners");
   app->add_option("--csv-triangles", a->table_triangles, "Base triangles in samples.csv (default 2000)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   app->add_flag("--no-side-vertex", a->no_side_vertex, "Leave out the side-vertex surface");
   app->add_flag("--no-render", a->no_render, "Skip the Blender renders");
   app->add_flag("--no-plots", a->no_plots, "Skip the matplotlib plots");

@@ -65,7 +65,7 @@ Command add_reduce_command(CLI::App& parent) {
   app->add_option("--tolerance", args->settings.tolerance,
                   "Largest distance, in world units, of an original vertex from the reduced surface and of "
                   "a new point from the original (default 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   app->add_flag("--lock-boundary", args->settings.lock_boundary,
                 "Never remove a triangle touching the mesh boundary (Remark 5.8)");
   app->add_option("--point", args->settings.point,
@@ -87,7 +87,7 @@ Command add_reduce_command(CLI::App& parent) {
   app->add_option("--rms-tolerance", args->settings.rms_tolerance,
                   "With --graph: stop before the RMS height error at the original vertices exceeds this, "
                   "in world units (Remark 5.10; default 0: off)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_number())
       ->needs(graph);
   app->add_flag("--no-overlap", args->settings.prevent_overlap,
                 "Refuse every removal whose new triangles would cross another triangle, so that the "

@@ -74,7 +74,7 @@ void add_contour_options(CLI::App& app, ContourSettings& settings, const std::st
       ->check(CLI::IsMember({"auto", "increasing", "decreasing"}))
       ->capture_default_str();
   app.add_option("--threads", settings.threads, "Worker threads; 0 = all cores, 1 = serial")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_number())
       ->capture_default_str();
   add_progress_flags(app, settings.progress);
 }
