@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "progress.h"
 #include "report.h"
 
 namespace isoform::cli {
@@ -103,9 +104,14 @@ ContourResult contour_grid(const std::string& input, const isoform_volume* volum
   return result;
 }
 
+// NOTE: on the progress worker, so that Ctrl-C while a large file is
+// written stops the write and removes its temporary file instead of ending
+// the process with the temporary file left beside the output.
 double save_mesh(const isoform_mesh* mesh, const std::string& path) {
   const Clock::time_point start = Clock::now();
-  check(isoform_mesh_save(mesh, path.c_str()));
+  ProgressOptions quiet;
+  quiet.quiet = true;
+  run_with_progress([&](isoform_progress* p) { return isoform_mesh_save_progress(mesh, path.c_str(), p); }, quiet);
   return seconds_since(start);
 }
 

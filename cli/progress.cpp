@@ -27,18 +27,25 @@ constexpr int kBarWidth = 30;
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
-// Routes Ctrl-C to the cancel flag while a call runs, then restores the
-// previous handler, so an interrupt outside a long call still ends the
-// process at once.
+// Routes Ctrl-C (and a termination request) to the cancel flag while a
+// call runs, then restores the previous handlers, so an interrupt outside a
+// long call still ends the process at once.
 class InterruptGuard {
  public:
-  InterruptGuard() : previous_(std::signal(SIGINT, on_interrupt)) { g_interrupted = 0; }
-  ~InterruptGuard() { std::signal(SIGINT, previous_); }
+  InterruptGuard()
+      : previous_int_(std::signal(SIGINT, on_interrupt)), previous_term_(std::signal(SIGTERM, on_interrupt)) {
+    g_interrupted = 0;
+  }
+  ~InterruptGuard() {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+  }
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
  private:
-  void (*previous_)(int);
+  void (*previous_int_)(int);
+  void (*previous_term_)(int);
 };
 
 const char* stage_name(int stage) {
@@ -129,6 +136,9 @@ void run_with_progress(const std::function<isoform_status(isoform_progress*)>& c
   const Outcome result = outcome.get();
   if (result.status == ISOFORM_ERR_CANCELLED) throw Failure(result.error, kInterruptedExitCode);
   if (result.status != ISOFORM_OK) throw Failure(result.error);
+  // A call that never looked at the flag (an unchanged copy's checks, say)
+  // still ends the command: nothing after it runs, nothing is written.
+  if (g_interrupted) throw Failure("interrupted", kInterruptedExitCode);
 }
 
 }  // namespace isoform::cli

@@ -22,7 +22,8 @@ void add_progress_flags(CLI::App& app, ProgressOptions& options);
 // Runs call(progress) on a worker thread and polls progress every ~100 ms.
 // The bar appears once the call has run ~0.5 s and stderr is a terminal
 // (at once with force; never with quiet) and is erased at the end. Ctrl-C
-// sets the cancel flag, so the library stops and leaves nothing behind.
+// (or SIGTERM) sets the cancel flag, so the library stops and leaves nothing
+// behind; an interrupt the call did not act on fails the command too.
 // Throws Failure with the worker thread's isoform_last_error() on failure.
 void run_with_progress(const std::function<isoform_status(isoform_progress*)>& call,
                        const ProgressOptions& options);

@@ -279,6 +279,12 @@ ISOFORM_API isoform_status isoform_mesh_load(const char* path, isoform_mesh** ou
  * leaves half a file. */
 ISOFORM_API isoform_status isoform_mesh_save(const isoform_mesh* mesh, const char* path);
 
+/* isoform_mesh_save that stops when progress->cancel is set while the file is
+ * written (progress may be NULL): ISOFORM_ERR_CANCELLED, the temporary file
+ * removed and path untouched. */
+ISOFORM_API isoform_status isoform_mesh_save_progress(const isoform_mesh* mesh, const char* path,
+                                                      isoform_progress* progress);
+
 ISOFORM_API void isoform_mesh_free(isoform_mesh* mesh);
 
 /* ------------------------------------------------------------------ */

@@ -175,9 +175,13 @@ isoform_status isoform_mesh_load(const char* path, isoform_mesh** out) {
 }
 
 isoform_status isoform_mesh_save(const isoform_mesh* mesh, const char* path) {
+  return isoform_mesh_save_progress(mesh, path, nullptr);
+}
+
+isoform_status isoform_mesh_save_progress(const isoform_mesh* mesh, const char* path, isoform_progress* progress) {
   return guarded([&] {
     if (!mesh || !path) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_save: NULL argument");
-    isoform::save_mesh(mesh->mesh, path);
+    isoform::save_mesh(mesh->mesh, path, isoform::Progress(progress));
     return ISOFORM_OK;
   });
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <random>
 #include <system_error>
+#include <utility>
 
 #include "../errors.h"
 
@@ -60,7 +61,8 @@ void sync_directory_of(const std::string& path) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& path) : path_(path) {
+AtomicFile::AtomicFile(const std::string& path, std::function<bool()> cancelled)
+    : path_(path), cancelled_(std::move(cancelled)) {
   int error = 0;
   for (int attempt = 0; attempt < kCreateAttempts; ++attempt) {
     temp_path_ = path + ".tmp-" + random_suffix();
@@ -91,7 +93,12 @@ void AtomicFile::write(const void* data, size_t size) {
   buffer_.insert(buffer_.end(), bytes, bytes + size);
 }
 
+void AtomicFile::check_cancel() const {
+  if (cancelled_ && cancelled_()) throw Cancelled("writing " + path_ + " was cancelled");
+}
+
 void AtomicFile::flush() {
+  check_cancel();
   if (int error = write_all(fd_, buffer_.data(), buffer_.size())) fail("write", error);
   buffer_.clear();
 }
@@ -103,6 +110,7 @@ void AtomicFile::commit() {
   fd_ = -1;
   // close can report a deferred write error (NFS), so it is checked too.
   if (::close(fd) != 0) fail("close", errno);
+  check_cancel();
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     int error = errno;
     throw IoError("cannot rename " + temp_path_ + " to " + path_ + ": " + error_text(error));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,8 +15,10 @@ namespace isoform::meshio {
 
 class AtomicFile {
  public:
-  // Creates PATH.tmp-<random> in path's directory. Throws IoError.
-  explicit AtomicFile(const std::string& path);
+  // Creates PATH.tmp-<random> in path's directory. Throws IoError. With
+  // `cancelled`, each buffer written and the rename first ask it, and throw
+  // Cancelled when it says yes (the temporary file is then removed).
+  explicit AtomicFile(const std::string& path, std::function<bool()> cancelled = {});
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -30,6 +33,7 @@ class AtomicFile {
 
  private:
   void flush();
+  void check_cancel() const;
   [[noreturn]] void fail(const std::string& action, int error) const;
 
   std::string path_;
@@ -37,6 +41,7 @@ class AtomicFile {
   int fd_ = -1;
   bool committed_ = false;
   std::vector<unsigned char> buffer_;
+  std::function<bool()> cancelled_;
 };
 
 }  // namespace isoform::meshio

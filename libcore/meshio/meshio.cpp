@@ -72,13 +72,15 @@ void check_format_limits(const Mesh& mesh, Format format, const std::string& pat
 
 }  // namespace
 
-void save_mesh(const Mesh& mesh, const std::string& path) {
+void save_mesh(const Mesh& mesh, const std::string& path) { save_mesh(mesh, path, Progress(nullptr)); }
+
+void save_mesh(const Mesh& mesh, const std::string& path, const Progress& progress) {
   Format format = format_of(path);
   check_sizes(mesh, path);
   check_indices(mesh.triangles, 3, "triangle", mesh.vertex_count(), path);
   check_indices(mesh.edges, 2, "edge", mesh.vertex_count(), path);
   check_format_limits(mesh, format, path);
-  meshio::AtomicFile file(path);
+  meshio::AtomicFile file(path, [&progress] { return progress.cancelled(); });
   switch (format) {
     case Format::ply: meshio::write_ply(mesh, file); break;
     case Format::obj: meshio::write_obj(mesh, file); break;

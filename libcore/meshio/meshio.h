@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../mesh.h"
+#include "../progress.h"
 
 namespace isoform {
 
@@ -31,6 +32,9 @@ namespace isoform {
 // Throws InvalidArgument for an unknown extension or an inconsistent mesh
 // (array sizes, indices out of range), IoError when writing fails.
 void save_mesh(const Mesh& mesh, const std::string& path);
+// The same, stopping with Cancelled (the temporary file removed, path left
+// untouched) when progress's cancel flag is set while the file is written.
+void save_mesh(const Mesh& mesh, const std::string& path, const Progress& progress);
 
 // Reads the mesh at path, choosing the format by extension as save_mesh does.
 // Returns points and triangles, and normals when the file gives one per

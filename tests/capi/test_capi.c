@@ -186,6 +186,26 @@ static void test_phantom_files_round_trip(void) {
   CHECK(isoform_mesh_save(m, "/nonexistent-dir/x.ply") == ISOFORM_ERR_IO);
   CHECK(isoform_mesh_save(m, ply) == ISOFORM_OK);
   {
+    /* A cancelled save: ISOFORM_ERR_CANCELLED, the file saved before kept
+     * whole, and nothing else in the folder. */
+    isoform_progress cancel = {0};
+    long before = 0, after = 0;
+    FILE* f = fopen(ply, "rb");
+    CHECK(f != NULL);
+    if (f) { fseek(f, 0, SEEK_END); before = ftell(f); fclose(f); }
+    cancel.cancel = 1;
+    CHECK(isoform_mesh_save_progress(m, obj, &cancel) == ISOFORM_ERR_CANCELLED);
+    CHECK(access(obj, F_OK) != 0);
+    CHECK(isoform_mesh_save_progress(m, ply, &cancel) == ISOFORM_ERR_CANCELLED);
+    f = fopen(ply, "rb");
+    CHECK(f != NULL);
+    if (f) { fseek(f, 0, SEEK_END); after = ftell(f); fclose(f); }
+    CHECK(before > 0 && after == before);
+    CHECK(isoform_mesh_save_progress(m, obj, NULL) == ISOFORM_OK);
+    CHECK(access(obj, F_OK) == 0);
+    unlink(obj);
+  }
+  {
     char bad[300];
     snprintf(bad, sizeof bad, "%s/p.xyz", dir);
     CHECK(isoform_mesh_save(m, bad) == ISOFORM_ERR_INVALID_ARGUMENT);
@@ -193,7 +213,7 @@ static void test_phantom_files_round_trip(void) {
   }
   unlink(ply);
   unlink(vdb);
-  rmdir(dir);
+  CHECK(rmdir(dir) == 0); /* nothing left behind, no temporary files */
   isoform_mesh_free(m);
   isoform_volume_free(back);
   isoform_volume_free(v);

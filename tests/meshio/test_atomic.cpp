@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "libcore/errors.h"
+#include "libcore/meshio/atomic_file.h"
 #include "libcore/meshio/meshio.h"
 #include "meshio_test_support.h"
 
@@ -47,6 +48,39 @@ TEST(Atomic, FailedRenameLeavesTheTargetAndNoTemporary) {
     EXPECT_EQ(read_file(dir.file(name) + "/inside.txt"), "keep me");
     EXPECT_EQ(dir.entries(), std::vector<std::string>{name});
   }
+}
+
+// A cancel set before or during the write: Cancelled, the old file as it
+// was, no temporary file.
+TEST(Atomic, ACancelledSaveLeavesTheTargetAndNoTemporary) {
+  TempDir dir;
+  write_file(dir.file("mesh.ply"), "old content");
+  isoform_progress sink{};
+  sink.cancel = 1;
+  EXPECT_THROW(save_mesh(octahedron(), dir.file("mesh.ply"), Progress(&sink)), Cancelled);
+  EXPECT_EQ(read_file(dir.file("mesh.ply")), "old content");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"mesh.ply"});
+  sink.cancel = 0;
+  save_mesh(octahedron(), dir.file("mesh.ply"), Progress(&sink));
+  EXPECT_EQ(load_mesh(dir.file("mesh.ply")).triangles, octahedron().triangles);
+}
+
+TEST(Atomic, ACancelBetweenBuffersStopsTheWrite) {
+  TempDir dir;
+  int asked = 0;
+  {
+    meshio::AtomicFile file(dir.file("big.bin"), [&asked] { return ++asked >= 3; });
+    const std::string chunk(300000, 'x');
+    try {
+      for (int k = 0; k < 20; ++k) file.write(chunk);
+      file.commit();
+      ADD_FAILURE() << "the write was not cancelled";
+    } catch (const Cancelled& e) {
+      EXPECT_NE(std::string(e.what()).find("big.bin"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(asked, 3);  // asked once per full buffer: stopped at the third
+  }
+  EXPECT_TRUE(dir.entries().empty());
 }
 
 TEST(Atomic, InvalidMeshIsRefusedBeforeTouchingTheFile) {
