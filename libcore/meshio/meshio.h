@@ -51,6 +51,9 @@ void save_mesh(const Mesh& mesh, const std::string& path, const Progress& progre
 // - OBJ: v, vn, f (a, a/b, a/b/c, a//c, negative indices).
 //   Normals are kept only when every vertex has exactly one.
 // - STL: binary or ascii; exactly equal corners are welded into one vertex.
+// A file with a zero normal (some writers fill the slots with zeros) is read
+// as one without normals. A number below a float's normal range in a text
+// file is read as the nearest float (0 or subnormal).
 // Throws InvalidArgument for an unknown extension, IoError when the file
 // cannot be read, FormatError (naming the file and the place) when its
 // content is malformed, truncated or not finite.

@@ -73,7 +73,7 @@ void ObjParser::read_triple(std::vector<float>& out, const char* what) {
     std::string_view token = cursor_.token_on_line();
     float value;
     if (token.empty()) fail(std::string(what) + " needs three numbers");
-    if (!parse_number(token, value)) fail("\"" + std::string(token) + "\" is not a number");
+    if (!parse_number(token, value)) fail(not_a_float(token));
     if (!std::isfinite(value)) fail(std::string(what) + " has a value that is not finite");
     out.push_back(value);
   }

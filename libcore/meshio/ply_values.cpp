@@ -1,6 +1,7 @@
 // Decoding PLY scalars from bytes or text.
 #include "ply_values.h"
 
+#include <cmath>
 #include <cstdint>
 
 #include "byte_order.h"
@@ -77,8 +78,10 @@ bool PlyAsciiValues::read(PlyType type, double& out) {
     return false;
   }
   if (parse_as(type, token, out)) return true;
-  problem_ = "line " + std::to_string(cursor_.line()) + ": \"" + std::string(token) +
-             "\" is not a " + ply_type_name(type);
+  double wide;
+  const bool too_big = type == PlyType::float32 && parse_number(token, wide) && std::isfinite(wide);
+  const std::string what = too_big ? "is beyond the range of a float" : std::string("is not a ") + ply_type_name(type);
+  problem_ = "line " + std::to_string(cursor_.line()) + ": \"" + std::string(token) + "\" " + what;
   return false;
 }
 

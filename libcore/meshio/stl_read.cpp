@@ -173,7 +173,7 @@ void AsciiStlParser::read_point(float point[3]) {
   for (int k = 0; k < 3; ++k) {
     std::string_view word = cursor_.token();
     if (word.empty()) fail("the file ends inside a facet (truncated?)");
-    if (!parse_number(word, point[k])) fail("\"" + std::string(word) + "\" is not a number");
+    if (!parse_number(word, point[k])) fail(not_a_float(word));
   }
 }
 

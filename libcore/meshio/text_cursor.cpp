@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <limits>
+#include <string>
 
 namespace isoform::meshio {
 namespace {
@@ -50,7 +53,23 @@ size_t TextCursor::line() const {
   return 1 + size_t(std::count(text_.begin(), text_.begin() + long(pos_), '\n'));
 }
 
-bool parse_number(std::string_view token, float& out) { return parse_whole(token, out); }
+// NOTE: a number too small for a float's normal range (1e-50) is read as
+// the float nearest to it (0 or a subnormal) rather than refused: it is a
+// number, and a coordinate that small is zero to any mesh.
+bool parse_number(std::string_view token, float& out) {
+  if (parse_whole(token, out)) return true;
+  double wide;
+  if (!parse_whole(token, wide) || !(std::fabs(wide) < double(std::numeric_limits<float>::min()))) return false;
+  out = float(wide);
+  return true;
+}
+
+std::string not_a_float(std::string_view token) {
+  double wide;
+  const std::string quoted = "\"" + std::string(token) + "\"";
+  if (parse_whole(token, wide) && std::isfinite(wide)) return quoted + " is beyond the range of a float";
+  return quoted + " is not a number";
+}
 bool parse_number(std::string_view token, double& out) { return parse_whole(token, out); }
 bool parse_number(std::string_view token, long long& out) { return parse_whole(token, out); }
 

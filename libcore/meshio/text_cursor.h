@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace isoform::meshio {
@@ -32,6 +33,10 @@ class TextCursor {
 bool parse_number(std::string_view token, float& out);
 bool parse_number(std::string_view token, double& out);
 bool parse_number(std::string_view token, long long& out);
+
+// What is wrong with a token that parse_number(token, float&) refused:
+// "\"abc\" is not a number" or "\"1e40\" is beyond the range of a float".
+std::string not_a_float(std::string_view token);
 
 // Whether token equals keyword, ignoring ASCII case ("SOLID" is "solid").
 bool same_keyword(std::string_view token, std::string_view keyword);

@@ -99,6 +99,7 @@ TEST(Obj, MalformedFilesAreFormatErrors) {
       {"normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2 3\n", "refers to normal 1 but 0"},
       {"short.obj", "v 0 0 0\nv 1 0\n", "line 2: v needs three numbers"},
       {"word.obj", "v 0 zero 0\n", "line 1: \"zero\" is not a number"},
+      {"big.obj", "v 0 1e40 0\n", "line 1: \"1e40\" is beyond the range of a float"},
       {"inf.obj", "v 0 0 0\nv 0 inf 0\n", "line 2: v has a value that is not finite"},
       {"edge.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "a face has 2 corners"},
   };

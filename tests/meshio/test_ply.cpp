@@ -235,6 +235,8 @@ TEST(Ply, MalformedAsciiFilesAreFormatErrors) {
       {"no_z.ply", ascii_triangle("", "0 0\n1 0\n0 1\n3 0 1 2\n"), "no scalar property z"},
       {"word.ply", ascii_triangle("property float z\n", "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n"),
        "vertex 1: line 11: \"zero\" is not a float"},
+      {"big.ply", ascii_triangle("property float z\n", "0 0 0\n1 1e40 0\n0 1 0\n3 0 1 2\n"),
+       "vertex 1: line 11: \"1e40\" is beyond the range of a float"},
       {"nan.ply", ascii_triangle("property float z\n", "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"),
        "vertex 1 has x = nan, which is not a finite float"},
       {"two.ply", ascii_triangle("property float z\n", "0 0 0\n1 0 0\n0 1 0\n2 0 1\n"),

@@ -154,6 +154,21 @@ TEST(PlyOptional, AnIncompleteGroupIsSkippedABadValueNamed) {
   EXPECT_NE(error.find("red.ply: vertex 1 has green = 300"), std::string::npos) << error;
 }
 
+TEST(PlyOptional, ZeroNormalsAreNoNormalsAndTinyNumbersAreZero) {
+  TempDir dir;
+  write_file(dir.file("zero.ply"),
+             ascii_vertices("property float x\nproperty float y\nproperty float z\nproperty float nx\n"
+                            "property float ny\nproperty float nz\n",
+                            {"0 0 0 0 0 1", "1 0 0 0 0 0", "0 1 1e-50 0 0 1"}));
+  const Mesh zero = load_mesh(dir.file("zero.ply"));
+  EXPECT_TRUE(zero.normals.empty());
+  EXPECT_EQ(zero.points[8], 0.0f);
+  write_file(dir.file("tiny.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 -1e-50\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+  const Mesh tiny = load_mesh(dir.file("tiny.obj"));
+  EXPECT_EQ(tiny.points[8], 0.0f);
+  EXPECT_EQ(tiny.normals.size(), 9u);  // a unit normal is kept
+}
+
 TEST(PlyOptional, DoublePointsAreKeptAndWrittenInDoubleWhereFloatWouldMoveThem) {
   TempDir dir;
   // A triangle ten million units from the origin, its sides a few units:
