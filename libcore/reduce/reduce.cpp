@@ -319,6 +319,10 @@ void run_passes(WorkMesh& w, const ReduceOptions& options, long long target, con
 
 ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress& progress) {
   check_options(options);
+  // NOTE: the passes ask every few hundred removals, so a small mesh could
+  // be reduced whole under a flag set before the call; asked here, and
+  // again before the passes and before the result replaces the mesh.
+  if (progress.cancelled()) throw Cancelled("reduce: cancelled");
   if (options.manifold_parts_only) return reduce::reduce_manifold_parts(mesh, options, progress);
   ReduceStats stats;
   stats.triangles_before = stats.triangles_after = (long long)mesh.triangle_count();
@@ -326,6 +330,7 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
   if (options.keep_fraction >= 1.0 || mesh.triangle_count() == 0) {
     reduce::validate_input(mesh, "reduce");
     if (options.graph) reduce::validate_graph(mesh, "reduce");
+    if (progress.cancelled()) throw Cancelled("reduce: cancelled");
     return stats;  // an unchanged copy
   }
   // The manifold checks' error first, else the overlap check's, else any other.
@@ -366,6 +371,7 @@ ReduceStats reduce_mesh(Mesh& mesh, const ReduceOptions& options, const Progress
     throw;
   }
   overlap.finish();
+  if (progress.cancelled()) throw Cancelled("reduce: cancelled");
   const bool precise = mesh.precise_points.size() == mesh.points.size();
   mesh = reduce::write_back(w, precise, curvature_stats, mesh.contour);
   stats.triangles_after = (long long)mesh.triangle_count();

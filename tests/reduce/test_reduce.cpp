@@ -431,6 +431,26 @@ TEST(Reduce, CancelLeavesTheMeshUnchanged) {
   EXPECT_EQ(m.triangles, before.triangles);
 }
 
+// A flag set before the call stops even a mesh small enough to be reduced
+// whole between two of the passes' looks at it, that brings its own
+// curvature (no curvature stage to look either), or is only copied.
+TEST(Reduce, ACancelBeforeTheCallStopsASmallMeshWithItsCurvature) {
+  for (const double keep : {0.1, 1.0}) {
+    Mesh m = figure510_torus(30, 15);
+    estimate_normals(m);
+    compute_curvature(m, CurvatureOptions(), Progress(nullptr));
+    const Mesh before = m;
+    isoform_progress sink{};
+    sink.cancel = 1;
+    ReduceOptions o;
+    o.keep_fraction = keep;
+    EXPECT_THROW(reduce_mesh(m, o, Progress(&sink)), Cancelled) << keep;
+    EXPECT_EQ(m.triangles, before.triangles);
+    EXPECT_EQ(m.points, before.points);
+    EXPECT_EQ(m.curvature.k1, before.curvature.k1);
+  }
+}
+
 // The reduction computes removals side by side and commits a batch's
 // accepted removals side by side (speculate.h, reduce.cpp): one thread,
 // every thread and four threads give the same mesh to the bit, with the
