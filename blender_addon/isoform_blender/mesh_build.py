@@ -190,16 +190,47 @@ def vertex_normals(mesh):
 
 def replace_geometry(obj, arrays):
     """Gives obj a new mesh datablock built from arrays (object space), with
-    the old one's name and materials; the old one goes when nothing else uses
-    it. Nothing changes if building fails."""
+    the old one's name (unless another object still uses the old one, which
+    keeps it), materials and faces' materials (carry_material_indices); the
+    old one goes when nothing else uses it. Nothing changes if building
+    fails."""
     old = obj.data
-    mesh = new_mesh(old.name, arrays)
+    name = old.name
+    mesh = new_mesh(name, arrays)
     for material in old.materials:
         mesh.materials.append(material)
+    carry_material_indices(old, mesh)
     obj.data = mesh
     if old.users == 0:
         bpy.data.meshes.remove(old)
+        mesh.name = name
     return mesh
+
+
+def face_centres(mesh):
+    centres = np.empty(3 * len(mesh.polygons), dtype=np.float32)
+    mesh.polygons.foreach_get("center", centres)
+    return centres.reshape(-1, 3)
+
+
+def carry_material_indices(old, mesh):
+    """Each face of mesh takes the material of the face of old whose centre
+    is nearest its own (both in object space): the reduction keeps no record
+    of which faces replaced which, and its faces lie on the old surface."""
+    count = len(old.polygons)
+    if len(old.materials) < 2 or count == 0 or len(mesh.polygons) == 0:
+        return
+    index = np.empty(count, dtype=np.int32)
+    old.polygons.foreach_get("material_index", index)
+    if not index.any():
+        return
+    from mathutils import kdtree
+    tree = kdtree.KDTree(count)
+    for i, centre in enumerate(face_centres(old)):
+        tree.insert(centre, i)
+    tree.balance()
+    nearest = np.array([tree.find(c)[1] for c in face_centres(mesh)], dtype=np.int64)
+    mesh.polygons.foreach_set("material_index", index[nearest])
 
 
 def world_normals(obj, matrix):

@@ -3,8 +3,9 @@
 The active mesh goes to the library as Blender triangulates it, in WORLD
 space (the tolerance is a world distance and curvature weights see the
 surface as it is rendered), and comes back into the object's own space as a
-new mesh datablock with the old one's name and materials: the object keeps
-its transform, modifiers and material slots. Undo restores the old mesh.
+new mesh datablock with the old one's name and materials, each new face
+taking the material of the old face nearest it: the object keeps its
+transform, modifiers and material slots. Undo restores the old mesh.
 """
 import bpy
 

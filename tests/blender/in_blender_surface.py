@@ -85,6 +85,26 @@ def case_reduce_keeps_fraction_closed_on_the_sphere():
              f"radius {radius.min()}..{radius.max()}")
 
 
+def case_reduce_keeps_the_name_and_the_faces_materials():
+    """An icosphere red below z = 0 and blue above, reduced to 20%: the mesh
+    keeps its name, and nearly every new face its half's material."""
+    obj = new_ico_sphere(2.0, 4, 1.0)
+    mesh_name = obj.data.name
+    red, blue = bpy.data.materials.new("isoform red"), bpy.data.materials.new("isoform blue")
+    obj.data.materials.clear()
+    obj.data.materials.append(red)
+    obj.data.materials.append(blue)
+    for polygon in obj.data.polygons:
+        polygon.material_index = 1 if polygon.center.z > 0 else 0
+    R.expect(bpy.ops.object.isoform_reduce(keep_percent=20.0) == {'FINISHED'}, "operator failed")
+    R.expect(obj.data.name == mesh_name, f"the mesh {mesh_name!r} came back as {obj.data.name!r}")
+    index = np.array([p.material_index for p in obj.data.polygons])
+    z = np.array([p.center.z for p in obj.data.polygons])
+    away = np.abs(z) > 0.3  # clear of the seam
+    right = np.mean(index[away] == (z[away] > 0))
+    R.expect(right > 0.98 and set(index) == {0, 1}, f"{right:.3f} of the faces keep their half's material")
+
+
 def case_reduce_matches_library():
     """The operator's mesh equals the library's reduction of the same world
     triangles, mapped back into the object's space."""
@@ -235,7 +255,8 @@ def case_compare_adds_the_loop_object_and_stores_metrics():
 def cases(runner):
     global R
     R = runner
-    return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_matches_library,
+    return [case_reduce_keeps_fraction_closed_on_the_sphere, case_reduce_keeps_the_name_and_the_faces_materials,
+            case_reduce_matches_library,
             case_reduce_errors_leave_the_mesh, case_reduce_no_overlap, case_reduce_height_field,
             case_smooth_surface_beside_the_mesh,
             case_smooth_surface_follows_level_and_blend,
