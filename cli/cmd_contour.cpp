@@ -22,7 +22,8 @@ struct ContourArgs {
   ContourSettings settings;
   bool curvature = false;
   CurvatureSettings curvature_settings;
-  std::string reduce;  // "" = no reduction; else the share to remove (90% or 0.9)
+  std::string reduce;  // the share to remove (90% or 0.9), when reduce_given
+  bool reduce_given = false;
   double reduce_seconds = 0.0;
   bool json = false;
 };
@@ -39,7 +40,7 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
                         {"write_seconds", write_seconds}};
     j.update(mesh_json(result.stats));
     if (args.curvature) j["curvature"] = curvature_json(result.mesh.get());
-    if (!args.reduce.empty()) j["reduce"] = reduce_json(result.mesh.get(), args.reduce_seconds);
+    if (args.reduce_given) j["reduce"] = reduce_json(result.mesh.get(), args.reduce_seconds);
     print_json(j);
     return;
   }
@@ -47,23 +48,30 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
             << "), method " << args.settings.method << '\n';
   print_mesh(std::cout, result.stats);
   if (args.curvature) print_curvature(std::cout, result.mesh.get());
-  if (!args.reduce.empty()) print_reduce(std::cout, result.mesh.get(), args.reduce_seconds);
+  if (args.reduce_given) print_reduce(std::cout, result.mesh.get(), args.reduce_seconds);
   print_row(std::cout, "time", format_seconds(result.seconds));
   std::cout << "wrote " << args.output << '\n';
 }
 
+// The share --reduce removes, in [0, 1) (0: the checks, then a copy).
+double removed_share(const std::string& text) {
+  const double removed = parse_share(text, "--reduce");
+  if (removed >= 1.0) throw Failure("--reduce: '" + text + "' would remove every triangle (write less than 100%)");
+  if (!(removed >= 0)) throw Failure("--reduce: '" + text + "' must lie in [0, 1), that is [0%, 100%)");
+  return removed;
+}
+
 // --reduce R removes the share R of the contour's triangles (Chapter 5).
 void reduce_contour(ContourArgs& args, isoform_mesh* mesh) {
-  if (args.reduce.empty()) return;
-  const double removed = parse_fraction(args.reduce, "--reduce");
-  if (removed >= 1.0) throw Failure("--reduce: '" + args.reduce + "' would remove every triangle");
+  if (!args.reduce_given) return;
+  const double removed = removed_share(args.reduce);
   ReduceSettings settings;
   settings.keep_fraction = 1.0 - removed;
   args.reduce_seconds = reduce_mesh(mesh, settings, args.input, args.settings.progress);
 }
 
 void run_contour(ContourArgs& args) {
-  if (!args.reduce.empty()) parse_fraction(args.reduce, "--reduce");  // fail before the contour
+  if (args.reduce_given) removed_share(args.reduce);  // fail before the contour
   if (args.curvature)
     check_output_path(args.input, args.output, {".ply"});  // only PLY carries curvature
   else
@@ -74,7 +82,7 @@ void run_contour(ContourArgs& args) {
   if (args.curvature)
     compute_curvature(result.mesh.get(), args.curvature_settings, args.settings.threads, args.settings.progress);
   reduce_contour(args, result.mesh.get());
-  if (!args.reduce.empty()) result.stats = mesh_stats(result.mesh.get());
+  if (args.reduce_given) result.stats = mesh_stats(result.mesh.get());
   const double write_seconds = save_mesh(result.mesh.get(), args.output);
   report_contour(args, grid_info(volume.get(), grid), result, write_seconds);
 }
@@ -101,10 +109,15 @@ Command add_contour_command(CLI::App& parent) {
                 "Also compute principal curvatures (as `isoform curvature`) from the volume's normals; "
                 "needs a .ply output");
   add_curvature_options(*app, args->curvature_settings, "--curvature-method");
-  app->add_option("--reduce", args->reduce,
-                  "Then remove this share of the triangles (Chapter 5, as `isoform reduce`): 90% or 0.9");
+  CLI::Option* reduce = app->add_option(
+      "--reduce", args->reduce,
+      "Then remove this share of the triangles (Chapter 5, as `isoform reduce`): 90% or 0.9; 0% only checks "
+      "the mesh as the reduction would");
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
-  return {app, [args] { run_contour(*args); }};
+  return {app, [args, reduce] {
+            args->reduce_given = reduce->count() > 0;
+            run_contour(*args);
+          }};
 }
 
 }  // namespace isoform::cli

@@ -33,14 +33,18 @@ std::vector<std::string> left_alone(const isoform_mesh* mesh, const isoform_redu
 
 }  // namespace
 
-double parse_fraction(const std::string& text, const std::string& flag) {
+double parse_share(const std::string& text, const std::string& flag) {
   const bool percent = !text.empty() && text.back() == '%';
   const std::string number = percent ? text.substr(0, text.size() - 1) : text;
   char* end = nullptr;
   const double value = std::strtod(number.c_str(), &end);
   if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value))
     throw Failure(flag + ": '" + text + "' is not a fraction (write 10% or 0.1)");
-  const double fraction = percent ? value / 100.0 : value;
+  return percent ? value / 100.0 : value;
+}
+
+double parse_fraction(const std::string& text, const std::string& flag) {
+  const double fraction = parse_share(text, flag);
   if (!(fraction > 0 && fraction <= 1))
     throw Failure(flag + ": '" + text + "' must lie in (0, 1], that is (0%, 100%]");
   return fraction;

@@ -23,7 +23,10 @@ struct ReduceSettings {
   double rms_tolerance = 0.0;        // graph: stop before the RMS height error exceeds it (0: off)
 };
 
-// "10%" or "0.1" as a fraction in (0, 1]; Failure naming `flag` otherwise.
+// "10%" or "0.1" as a number (no range checked); Failure naming `flag` when
+// the text is neither.
+double parse_share(const std::string& text, const std::string& flag);
+// The same as a fraction in (0, 1]; Failure naming `flag` otherwise.
 double parse_fraction(const std::string& text, const std::string& flag);
 
 // Runs isoform_reduce on mesh (the error measured as well) and returns the

@@ -117,6 +117,15 @@ def case_contour_reduce(tmp):
     again = os.path.join(tmp, "again.obj")
     run("reduce", full, "--keep", "0.1", "-o", again)
     expect(base.read_obj(again)[2] == faces, "contour --reduce 90% differs from reduce --keep 0.1")
+    # 0% checks and copies; an empty or whole share is refused before any work, with no output.
+    copy = os.path.join(tmp, "copy.obj")
+    summary, _ = run_json("contour", data("sphere.vdb"), "--reduce", "0%", "-o", copy)
+    expect(summary["reduce"]["triangles_after"] == summary["reduce"]["triangles_before"], f"{summary}")
+    expect(base.read_obj(copy)[2] == base.read_obj(full)[2], "contour --reduce 0% changed the mesh")
+    for share, message in (("", "is not a fraction"), ("100%", "would remove every triangle")):
+        bad = os.path.join(tmp, "bad.obj")
+        proc = run("contour", data("sphere.vdb"), "--reduce", share, "-o", bad, code=1)
+        expect(message in proc.stderr and not os.path.exists(bad), f"--reduce {share!r}: {proc.stderr!r}")
 
 
 def case_keep_all_is_a_copy(tmp):
