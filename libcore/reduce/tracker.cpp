@@ -2,6 +2,8 @@
 #include "tracker.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -57,6 +59,8 @@ Tracker::Tracker(const WorkMesh& w, double distance_tolerance, double rms_tolera
   }
   head_.assign(nt, -1);
   next_.assign(nv, -1);
+  sampled_ = !std::isfinite(distance_) && !(rms_ > 0);
+  if (sampled_ && measure_) follow_.assign(nv, -1);
   if (rms_ > 0) touched_.assign(nv, 0);
   for (size_t v = 0; v < nv; ++v) {
     if (w.vfaces[v].empty()) continue;
@@ -217,8 +221,22 @@ void Tracker::accept(const TrackerPending& t) {
   max_distance_ = pending_max_;
 }
 
+namespace {
+
+// A vertex's rank among those handed to one face (a bijection of the ids:
+// no two vertices share one).
+uint32_t sample_rank(int v) { return uint32_t(v) * 2654435761u; }
+// The vertex of a rank (2654435761 * 244002641 = 1 modulo 2^32).
+int ranked_vertex(uint32_t rank) { return int(rank * 244002641u); }
+
+}  // namespace
+
 void Tracker::relink(const Platelet& p, const TrackerPending& t, const int* ids) {
   for (int f : p.faces) head_[size_t(f)] = -1;  // re-linked below
+  if (sampled_) {
+    relink_sample(p, t, ids);
+    return;
+  }
   for (size_t i = 0; i < t.vertex.size(); ++i) {
     const int v = t.vertex[i], f = ids[size_t(t.face[i])];
     next_[size_t(v)] = head_[size_t(f)];
@@ -226,6 +244,51 @@ void Tracker::relink(const Platelet& p, const TrackerPending& t, const int* ids)
     if (rms_ > 0) {
       original_[size_t(v)].err2 = t.err2[i];
       touched_[size_t(v)] = 1;
+    }
+  }
+}
+
+void Tracker::relink_sample(const Platelet& p, const TrackerPending& t, const int* ids) {
+  // Per new face, the least kSample ranks handed to it, ascending.
+  static thread_local std::vector<std::array<uint32_t, kSample>> least;
+  static thread_local std::vector<int> count;
+  const size_t faces = p.faces.size();
+  least.resize(faces);
+  count.assign(faces, 0);
+  for (size_t i = 0; i < t.vertex.size(); ++i) {
+    const size_t f = size_t(t.face[i]);
+    auto& l = least[f];
+    const int n = std::min(count[f], kSample);
+    uint32_t r = sample_rank(t.vertex[i]);
+    if (n == kSample && r >= l[kSample - 1]) {
+      ++count[f];
+      continue;
+    }
+    int k = n == kSample ? kSample - 1 : n;
+    for (; k > 0 && l[size_t(k - 1)] > r; --k) l[size_t(k)] = l[size_t(k - 1)];
+    l[size_t(k)] = r;
+    ++count[f];
+  }
+  // The kept ones linked in the order of t.vertex, as relink links all.
+  for (size_t i = 0; i < t.vertex.size(); ++i) {
+    const int v = t.vertex[i];
+    const size_t local = size_t(t.face[i]);
+    const int f = ids[local];
+    const int n = std::min(count[local], kSample);
+    if (sample_rank(v) <= least[local][size_t(n - 1)]) {
+      next_[size_t(v)] = head_[size_t(f)];
+      head_[size_t(f)] = v;
+    } else if (!follow_.empty()) {
+      // The kept one nearest to it.
+      double best = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < n; ++k) {
+        const int u = ranked_vertex(least[local][size_t(k)]);
+        const double d2 = (original_[size_t(u)].x - original_[size_t(v)].x).squaredNorm();
+        if (d2 < best) {
+          best = d2;
+          follow_[size_t(v)] = u;
+        }
+      }
     }
   }
 }
@@ -256,18 +319,53 @@ void Tracker::measure_result(const WorkMesh& w) {
     const auto& t = w.tri[size_t(f)];
     return point_triangle_distance(x, w.pos[size_t(t[0])], w.pos[size_t(t[1])], w.pos[size_t(t[2])]);
   };
+  // x against face f and the faces sharing a vertex with it; the nearest
+  // of them into *nearest.
+  const auto around_face = [&](const Eigen::Vector3d& x, int f, int* nearest = nullptr) {
+    double d = distance_to_face(x, f);
+    if (nearest) *nearest = f;
+    for (int corner : w.tri[size_t(f)])
+      for (int g : w.vfaces[size_t(corner)]) {
+        const double e = distance_to_face(x, g);
+        if (e < d && nearest) *nearest = g;
+        d = std::min(d, e);
+      }
+    return d;
+  };
   const double from_original = largest(w.tri.size(), [&](size_t f) {
     double m = 0;
     if (!w.face_alive[f]) return m;
-    for (int v = head_[f]; v >= 0; v = next_[size_t(v)]) {
-      const Eigen::Vector3d& x = original_[size_t(v)].x;
-      double d = distance_to_face(x, int(f));
-      for (int corner : w.tri[f])
-        for (int g : w.vfaces[size_t(corner)]) d = std::min(d, distance_to_face(x, g));
-      m = std::max(m, d);
-    }
+    for (int v = head_[f]; v >= 0; v = next_[size_t(v)]) m = std::max(m, around_face(original_[size_t(v)].x, int(f)));
     return m;
   });
+  // The vertices left out of the lists (relink): each from the face of the
+  // listed vertex its chain of followed ones ends at (the neighbourhood it
+  // was handed to when it was left out, since moved on with the surface),
+  // on to the nearest face around it while that is nearer. Any face gives
+  // an upper bound.
+  double from_left_out = 0;
+  if (!follow_.empty()) {
+    BigVector<int> owner(original_.size(), -1);
+    tbb::parallel_for(size_t(0), w.tri.size(), [&](size_t f) {
+      if (!w.face_alive[f]) return;
+      for (int v = head_[f]; v >= 0; v = next_[size_t(v)]) owner[size_t(v)] = int(f);
+    });
+    from_left_out = largest(original_.size(), [&](size_t v) {
+      int u = follow_[v];
+      if (u < 0) return 0.0;
+      while (follow_[size_t(u)] >= 0) u = follow_[size_t(u)];
+      int f = owner[size_t(u)], g = f;
+      if (f < 0) return 0.0;
+      double d = around_face(original_[v].x, f, &g);
+      while (g != f) {
+        f = g;
+        const double e = around_face(original_[v].x, f, &g);
+        if (!(e < d)) break;
+        d = e;
+      }
+      return d;
+    });
+  }
   // Each vertex against the original triangles around the few original
   // vertices nearest to it among those of its faces (a subset of the
   // original surface: again an upper bound).
@@ -297,7 +395,7 @@ void Tracker::measure_result(const WorkMesh& w) {
     }
     return std::isfinite(nearest) ? nearest : 0.0;
   });
-  max_distance_ = std::max(from_original, to_original);
+  max_distance_ = std::max({from_original, from_left_out, to_original});
 }
 
 }  // namespace isoform::reduce

@@ -1,7 +1,8 @@
 // Error tracking for the reduction's tolerances. Every original vertex is
 // assigned to one current triangle; when a removal replaces triangles, their
-// vertices are handed to the nearest new triangle. That gives, per removal
-// and before anything changes:
+// vertices are handed to the nearest new triangle (without a tolerance, a
+// sample of them: relink). That gives, per removal and before anything
+// changes:
 // - distance mode (any surface): each original vertex's distance to its
 //   triangle (an upper bound of its distance to the reduced surface), and the
 //   new point's distance to the original triangles around the same original
@@ -90,11 +91,28 @@ class Tracker {
   // Hands the original vertices of the removal of p's faces to their new
   // faces (ids[i] is the face id given to faces[i]). Removals whose
   // platelets share no face may be relinked side by side.
+  // Without a tolerance (the point refined, or the error measured at the
+  // end) a new face keeps at most kSample of the vertices handed to it: the
+  // kSample of least rank (a fixed scramble of their ids). Each one left
+  // out follows the kept one nearest to it, for measure_result.
+  // NOTE: the refined point is one least-squares step along one direction;
+  // a few vertices under each of the platelet's faces determine it as well
+  // as all of them, but late in a reduction to 1 % each face holds about 50
+  // and walking them was about 40 % of the removals' time. The bench's
+  // contour keeps the same error (docs/reduce.md).
   void relink(const Platelet& p, const TrackerPending& t, const int* ids);
+  static constexpr int kSample = 4;
+  // The original vertices listed under face f now.
+  std::vector<int> listed(int f) const {
+    std::vector<int> out;
+    for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) out.push_back(v);
+    return out;
+  }
 
   // Without a distance tolerance but asked to measure: the largest distance
   // of the result, bounded from above at the end rather than per removal
-  // (each original vertex's distance to the face it belongs to, and each
+  // (each original vertex's distance to the face it belongs to, or for one
+  // left out of the lists the face of the vertex it follows, and each
   // vertex's distance to the original triangles around the original
   // vertices nearest to it among those of its faces) into max_distance().
   // Call once, after the last removal.
@@ -114,6 +132,8 @@ class Tracker {
       for (int v = head_[size_t(f)]; v >= 0; v = next_[size_t(v)]) out.push_back(v);
   }
   static constexpr size_t kRecordsAhead = 8;
+  // relink when sampled_.
+  void relink_sample(const Platelet& p, const TrackerPending& t, const int* ids);
 
   double distance_, rms_;
   bool measure_;
@@ -129,6 +149,8 @@ class Tracker {
   BigVector<int> face_start_, face_list_;  // original vertex -> original faces (CSR)
   BigVector<std::array<int, 3>> original_tri_;
   BigVector<int> head_, next_;  // current face -> its original vertices (linked)
+  bool sampled_ = false;        // at most kSample vertices a face (relink)
+  BigVector<int> follow_;       // sampled and measured: per vertex left out, the vertex it follows (else -1)
   double sum_err2_ = 0, max_distance_ = 0;
   std::vector<uint8_t> touched_;  // per original vertex: its error was ever computed (graph mode)
   long long touched_count_ = 0;

@@ -334,7 +334,7 @@ TEST(Reduce, DistanceToleranceBoundsOriginalVertices) {
 // result to the original from above, and not loosely.
 TEST(Reduce, MeasuredErrorBoundsBothDirectionsAtVertices) {
   const Mesh original = figure510_torus(60, 30);
-  for (double keep : {0.3, 0.1}) {
+  for (double keep : {0.3, 0.1, 0.02}) {
     Mesh m = original;
     ReduceOptions o;
     o.measure_error = true;
