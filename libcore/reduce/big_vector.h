@@ -11,6 +11,16 @@
 // regions (its defrag setting `madvise`), a first write may wait for a
 // 2 MB page to be freed up: the reduction allocates these arrays once per
 // call, a few dozen of them.
+//
+// NOTE: a freed array's mapping is kept, its pages marked lazily free
+// (MADV_FREE: the system takes them back when it needs memory, without
+// writing them anywhere), and the next array that fits takes it, cut to
+// its size: a second reduction in the same process (the Blender add-on, a
+// bench's repeated calls) finds its pages present instead of asking the
+// kernel to clear about 150 MB again for a 1M-triangle mesh, which took
+// 0.06-0.24 s of one call on the machine bench/README.md describes. At
+// most kBigKeptBytes are kept, the oldest given back first. The contents
+// of a kept page are left over or zero: the vectors write before they read.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +33,9 @@ namespace isoform::reduce {
 void* allocate_big(size_t bytes);
 void free_big(void* p, size_t bytes);
 constexpr size_t kBigBytes = size_t(2) << 20;
+constexpr size_t kBigKeptBytes = size_t(1) << 30;
+// Unmaps the freed arrays' mappings kept for the next ones; returns their bytes.
+size_t release_kept_big();
 
 template <class T>
 struct BigAllocator {
