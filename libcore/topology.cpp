@@ -16,7 +16,9 @@ namespace {
 
 int corner_of(const int32_t* tri, int32_t v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : tri[2] == v ? 2 : -1; }
 
-bool degenerate(const Mesh& mesh, size_t t) {
+}  // namespace
+
+bool is_degenerate_triangle(const Mesh& mesh, size_t t) {
   const int32_t* tri = &mesh.triangles[3 * t];
   if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return true;
   const float* p = &mesh.points[3 * size_t(tri[0])];
@@ -27,6 +29,10 @@ bool degenerate(const Mesh& mesh, size_t t) {
   const double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
   return c[0] == 0 && c[1] == 0 && c[2] == 0;
 }
+
+namespace {
+
+bool degenerate(const Mesh& mesh, size_t t) { return is_degenerate_triangle(mesh, t); }
 
 // What one stretch of vertices finds: the stats' counts and the edges whose
 // lowest triangle it decided.

@@ -17,6 +17,10 @@ void compute_neighbours(Mesh& mesh);
 // Needs mesh.neighbours.
 void compute_parts(Mesh& mesh);
 
+// True if triangle t repeats a vertex or has zero area: the cross product of
+// its edges, in double from the stored float points, is exactly zero.
+bool is_degenerate_triangle(const Mesh& mesh, size_t t);
+
 // Both of the above.
 void compute_topology(Mesh& mesh);
 

@@ -18,7 +18,7 @@ struct Rgb {
 
 // Piecewise-linear colour maps through a few control colours, t in [0, 1].
 Rgb lerp_map(const Rgb* stops, int count, double t) {
-  t = std::clamp(t, 0.0, 1.0) * (count - 1);
+  t = (t > 0.0 ? std::min(t, 1.0) : 0.0) * (count - 1);  // NaN to 0: never an index
   const int i = std::min(count - 2, int(t));
   const double f = t - i;
   return {stops[i].r + f * (stops[i + 1].r - stops[i].r), stops[i].g + f * (stops[i + 1].g - stops[i].g),
@@ -77,8 +77,10 @@ namespace {
 void colour_range(const VertexCurvature& c, CurvatureQuantity q, double* lo, double* hi) {
   const std::vector<float>& values = curvature_values(c, q);
   const uint8_t* flags = c.flags.data();
-  // The 2nd and 98th percentiles of the usable vertices' values.
-  const auto ranks = float_ranks(values.data(), values.size(), [flags](size_t v) { return usable(flags[v]); });
+  // The 2nd and 98th percentiles of the usable vertices' finite values.
+  const float* data = values.data();
+  const auto ranks =
+      float_ranks(data, values.size(), [flags, data](size_t v) { return usable(flags[v]) && std::isfinite(data[v]); });
   const size_t n = ranks.count();
   auto rank = [n](double f) { return std::min(n - 1, size_t(f * double(n - 1) + 0.5)); };
   float at_lo = 0, at_hi = 0;
@@ -156,7 +158,7 @@ inline __attribute__((always_inline)) void colour_lanes(const float* values, con
   M grey;
   for (int l = 0; l < W; ++l) {
     t[l] = values[l];
-    grey[l] = -int64_t(!usable(flags[l]));
+    grey[l] = -int64_t(!usable(flags[l]) || !std::isfinite(values[l]) || !std::isfinite(lo) || !std::isfinite(hi));
   }
   t = (t - lo) / span;
   if (!absolute && !(hi > lo)) t = splat<D>(0.5);
@@ -219,10 +221,14 @@ void fill_colours(const VertexCurvature& c, CurvatureQuantity q, double lo, doub
 }  // namespace
 
 void curvature_colour(CurvatureQuantity q, double lo, double hi, float value, uint8_t flags, uint8_t* out) {
-  const double span = hi > lo ? hi - lo : 1.0;
-  const double t = (value - lo) / span;
-  Rgb rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
-  if (!usable(flags)) rgb = {0.5, 0.5, 0.5};
+  // A value that is not a number is shown as unusable: grey, as the flags
+  // say; it never reaches the map, whose segment index it would be.
+  Rgb rgb = {0.5, 0.5, 0.5};
+  if (usable(flags) && std::isfinite(value) && std::isfinite(lo) && std::isfinite(hi)) {
+    const double span = hi > lo ? hi - lo : 1.0;
+    const double t = (value - lo) / span;
+    rgb = q == CurvatureQuantity::Absolute ? sequential(t) : diverging(hi > lo ? t : 0.5);
+  }
   out[0] = channel(rgb.r);
   out[1] = channel(rgb.g);
   out[2] = channel(rgb.b);

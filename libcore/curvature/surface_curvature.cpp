@@ -12,6 +12,7 @@
 
 #include "../errors.h"
 #include "../fresh_memory.h"
+#include "../topology.h"
 #include "seed_vertex.h"
 #include "vertex_fit.h"
 
@@ -81,11 +82,33 @@ void store_four(VertexCurvature& c, size_t first, const VertexFitResult* r) {
   store_lanes(c, first, lanes);
 }
 
+// NOTE: a triangle without area has no normal and no plane: the fits
+// around it divide by zero and yield NaN. The reduction refuses such meshes
+// at entry; so does the curvature, naming the first offender, rather than
+// return values that are not numbers.
+void require_fittable(const Mesh& mesh) {
+  for (size_t i = 0; i < mesh.points.size(); ++i)
+    if (!std::isfinite(mesh.points[i]))
+      throw InvalidArgument("curvature: vertex " + std::to_string(i / 3) +
+                            " has a coordinate that is not finite (NaN or infinity)");
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (!is_degenerate_triangle(mesh, t)) continue;
+    const int32_t* v = &mesh.triangles[3 * t];
+    const std::string corners = " (" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " +
+                                std::to_string(v[2]) + ")";
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
+      throw InvalidArgument("curvature: triangle " + std::to_string(t) + " uses a vertex twice" + corners);
+    throw InvalidArgument("curvature: triangle " + std::to_string(t) + corners +
+                          " has no area at the precision of its coordinates");
+  }
+}
+
 }  // namespace
 
 void compute_curvature(const Mesh& mesh, const CurvatureOptions& options, const Progress& progress,
                        VertexCurvature& c, std::vector<float>* fitted) {
   const size_t n = mesh.vertex_count();
+  require_fittable(mesh);
   if (options.extra_rings < 0 || options.extra_rings > 8)
     throw InvalidArgument("curvature: extra rings must be 0 to 8, not " + std::to_string(options.extra_rings));
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.points.size())

@@ -68,12 +68,22 @@ uint64_t binary_triangle_count(std::string_view bytes) {
   return load_little_endian(reinterpret_cast<const unsigned char*>(bytes.data()) + kHeaderSize, 4);
 }
 
+// Control bytes other than white space never occur in an ascii STL; a
+// binary one has them in its count or its first triangle.
+bool looks_like_text(std::string_view bytes) {
+  for (unsigned char c : bytes.substr(0, 1024))
+    if (c == 127 || (c < 32 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v')) return false;
+  return true;
+}
+
 // A binary header may begin with "solid" too, so the text is taken for ascii
-// only when the size does not fit the binary layout.
+// only when the size does not fit the binary layout and the start reads as
+// text; a binary file that lies about its count is then reported as one.
 bool is_ascii(std::string_view bytes) {
   if (bytes.size() < 5 || !same_keyword(bytes.substr(0, 5), "solid")) return false;
-  return bytes.size() < kBinaryStart ||
-         bytes.size() != kBinaryStart + kTriangleSize * binary_triangle_count(bytes);
+  if (bytes.size() >= kBinaryStart && bytes.size() == kBinaryStart + kTriangleSize * binary_triangle_count(bytes))
+    return false;
+  return looks_like_text(bytes);
 }
 
 Mesh read_binary(std::string_view bytes, const std::string& path) {

@@ -3,7 +3,9 @@
 // the range's ends, its middle and flagged vertices to the maps' colours.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -93,4 +95,29 @@ TEST(CurvatureColours, TheRuleMapsEndsMiddleAndFlags) {
   EXPECT_EQ(out[0], 128);
   EXPECT_EQ(out[1], 128);
   EXPECT_EQ(out[2], 128);
+}
+
+// A value that is not a number (which the fits never give, but a caller's
+// array may hold) is grey, never an index into the map.
+TEST(CurvatureColours, ValuesThatAreNotNumbersAreGrey) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  VertexCurvature c;
+  c.mean = {nan, inf, -inf, 0.5f, 1.0f, nan, 0.25f, -inf, 0.0f};
+  c.flags.assign(c.mean.size(), 0);
+  std::vector<uint8_t> colors;
+  double lo = 0, hi = 0;
+  curvature_colours(c, CurvatureQuantity::Mean, colors, &lo, &hi);
+  EXPECT_TRUE(std::isfinite(lo) && std::isfinite(hi));
+  for (size_t v = 0; v < c.mean.size(); ++v) {
+    SCOPED_TRACE(v);
+    uint8_t one[4];
+    curvature_colour(CurvatureQuantity::Mean, lo, hi, c.mean[v], 0, one);
+    EXPECT_EQ(std::vector<uint8_t>(one, one + 4), std::vector<uint8_t>(&colors[4 * v], &colors[4 * v + 4]));
+    if (!std::isfinite(c.mean[v])) {
+      EXPECT_EQ(one[0], 128);
+    }
+  }
+  uint8_t one[4];
+  curvature_colour(CurvatureQuantity::Absolute, nan, nan, 1.0f, 0, one);
+  EXPECT_EQ(one[0], 128);
 }

@@ -174,8 +174,8 @@ TEST(SurfaceCurvature, CancelLeavesTheMeshAlone) {
 }
 
 // Bad vertices get a defined, finite result and a flag: an isolated vertex,
-// a non-manifold edge (three triangles), a zero-area triangle, a duplicate
-// point, and a mesh without triangles.
+// a non-manifold edge (three triangles), a duplicate point, and a mesh
+// without triangles.
 TEST(SurfaceCurvature, BadVerticesAreFlaggedNeverNaN) {
   std::vector<Exact> exact;
   Mesh m = shape_mesh(Shape::Sphere, 16, 0.0, 1, exact);
@@ -185,9 +185,8 @@ TEST(SurfaceCurvature, BadVerticesAreFlaggedNeverNaN) {
   // A fin on edge (0, 1): a third triangle there, to a new point.
   m.points.insert(m.points.end(), {0.0f, 0.0f, 0.0f});
   m.triangles.insert(m.triangles.end(), {m.triangles[0], m.triangles[1], n + 1});
-  // A duplicate of vertex 2 and a zero-area triangle using it.
+  // A duplicate of vertex 2, unused.
   m.points.insert(m.points.end(), {m.points[6], m.points[7], m.points[8]});
-  m.triangles.insert(m.triangles.end(), {2, n + 2, m.triangles[1]});
   compute_topology(m);
   estimate_normals(m);
   curvature(m, CurvatureOptions{}.method);
@@ -200,13 +199,44 @@ TEST(SurfaceCurvature, BadVerticesAreFlaggedNeverNaN) {
   EXPECT_TRUE(m.curvature.flags[size_t(n)] & kCurvatureIsolated);
   EXPECT_EQ(m.curvature.k1[size_t(n)], 0.0f);
   EXPECT_TRUE(m.curvature.flags[size_t(m.triangles[0])] & kCurvatureNonmanifold);
-  EXPECT_EQ(m.curvature.stats.isolated, 1);
+  EXPECT_EQ(m.curvature.stats.isolated, 2);  // the lone point and the unused duplicate
   EXPECT_GE(m.curvature.stats.nonmanifold, 2);
 
   Mesh empty;
   empty.points = {0, 0, 0, 1, 0, 0};
   curvature(empty, CurvatureOptions{}.method);
   EXPECT_EQ(empty.curvature.stats.isolated, 2);
+}
+
+// A triangle without a plane is refused, naming it, as the reduction refuses
+// it: one that repeats a vertex, one of three points on a line, and the
+// fuzzer's kind of case, subnormal coordinates beside (1, 0, 0), here on one
+// line. A coordinate that is not finite is refused too.
+TEST(SurfaceCurvature, TrianglesWithoutAPlaneAreRefused) {
+  struct Case {
+    std::vector<float> points;
+    std::vector<int32_t> triangles;
+    std::string message;
+  } cases[] = {
+      {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2, 0, 2, 2}, "curvature: triangle 1 uses a vertex twice (0, 2, 2)"},
+      {{0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0}, {0, 1, 2, 0, 3, 1},
+       "curvature: triangle 1 (0, 3, 1) has no area at the precision of its coordinates"},
+      {{1e-45f, 0, 0, 1, 0, 0, 3e-45f, 0, 0, 0, 1e-33f, 0}, {0, 1, 3, 0, 1, 2},
+       "curvature: triangle 1 (0, 1, 2) has no area at the precision of its coordinates"},
+      {{0, 0, 0, 1, 0, 0, 0, NAN, 0}, {0, 1, 2}, "curvature: vertex 2 has a coordinate that is not finite"},
+  };
+  for (Case& c : cases) {
+    Mesh m;
+    m.points = c.points;
+    m.triangles = c.triangles;
+    try {
+      curvature(m, CurvatureOptions{}.method);
+      ADD_FAILURE() << "accepted: " << c.message;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(c.message, 0), 0u) << e.what();
+    }
+    EXPECT_TRUE(m.curvature.empty());
+  }
 }
 
 // Contours of a level-set sphere and torus (Chapter 3, Zucker-Hummel

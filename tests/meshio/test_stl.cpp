@@ -107,6 +107,12 @@ TEST(Stl, MalformedFilesAreFormatErrors) {
   TempDir dir;
   save_mesh(octahedron(), dir.file("whole.stl"));
   std::string binary = read_file(dir.file("whole.stl"));
+  // A header that says "solid" and a count beyond the file: a binary file
+  // cut short, not an ascii one that lacks endsolid.
+  std::string lying = binary;
+  lying.replace(0, 10, "solid evil");
+  lying[80] = char(0xe8);
+  lying[81] = char(0x03);  // 1,000 triangles
   struct Case {
     std::string name, bytes, expected;
   } cases[] = {
@@ -118,6 +124,7 @@ TEST(Stl, MalformedFilesAreFormatErrors) {
       {"typo.stl", "solid x\nfacet normal 0 0 1\nouter lop\n",
        "line 3: expected loop, found \"lop\""},
       {"end.stl", "solid x\n", "the file ends before endsolid"},
+      {"solid.stl", lying, "binary STL of 1000 triangles needs 50084 bytes but the file has 484 (truncated?)"},
   };
   for (const Case& c : cases) {
     write_file(dir.file(c.name), c.bytes);
