@@ -33,7 +33,16 @@ void run_curvature(const CurvatureArgs& args) {
   const MeshPtr mesh = load_mesh(args.input);
   if (isoform_mesh_triangle_count(mesh.get()) == 0)
     throw Failure(args.input + ": the mesh has no triangles, so it has no curvature");
-  const double seconds = compute_curvature(mesh.get(), args.settings, args.threads, args.progress);
+  double seconds = 0;
+  try {
+    seconds = compute_curvature(mesh.get(), args.settings, args.threads, args.progress);
+  } catch (const Failure& failure) {
+    // The library names its step ("curvature: triangle 2 ..."); the user
+    // needs the file.
+    const std::string message = failure.what(), library = "curvature: ";
+    const bool named = message.rfind(library, 0) == 0;
+    throw Failure(args.input + ": " + (named ? message.substr(library.size()) : message), failure.exit_code());
+  }
   const double write_seconds = save_mesh(mesh.get(), args.output);
   if (args.json) {
     Json j = {{"input", args.input}, {"output", args.output}, {"curvature_seconds", seconds},

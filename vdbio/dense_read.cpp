@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "input_file.h"
+#include "nrrd_check.h"
 #include "libcore/errors.h"
 
 namespace isoform::vdbio {
@@ -219,7 +220,7 @@ std::shared_ptr<DenseVolume> read_raw(const std::string& path, const RawLayout& 
 bool has_nrrd_magic(const std::string& path) { return read_prefix(path, 4) == "NRRD"; }
 
 std::shared_ptr<DenseVolume> read_nrrd(const std::string& path) {
-  require_input_file(path);
+  check_nrrd_header(path, default_memory_budget());
   Index3 dims;
   Affine affine;
   std::vector<float> values;

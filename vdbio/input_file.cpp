@@ -1,6 +1,8 @@
 // Checks on an input file before a format reader sees it.
 #include "input_file.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -37,6 +39,12 @@ std::string read_prefix(const std::string& path, size_t n) {
   if (in.bad()) throw IoError(path + ": cannot be read");
   bytes.resize(size_t(in.gcount()));
   return bytes;
+}
+
+uint64_t default_memory_budget() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return uint64_t(4) << 30;
+  return uint64_t(pages) * uint64_t(page) / 2;
 }
 
 }  // namespace isoform::vdbio

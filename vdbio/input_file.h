@@ -17,4 +17,9 @@ std::uintmax_t input_file_size(const std::string& path);
 // it cannot be read.
 std::string read_prefix(const std::string& path, size_t n);
 
+// The most memory one file's data may take once decoded: half the
+// machine's physical memory. A file whose sizes claim more is refused
+// before anything is allocated for it.
+uint64_t default_memory_budget();
+
 }  // namespace isoform::vdbio

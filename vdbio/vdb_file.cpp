@@ -7,11 +7,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "active_bricks.h"
+#include "input_file.h"
 #include "leaf_bricks.h"
 #include "libcore/errors.h"
 #include "vdb_convert.h"
@@ -119,7 +121,8 @@ void add_scalar_facts(const openvdb::GridBase& grid, const std::string& what, Gr
 
 }  // namespace
 
-VdbFile::VdbFile(std::string path) : path_(std::move(path)), names_(read_vdb_grid_table(path_)) {
+VdbFile::VdbFile(std::string path) : path_(std::move(path)), layout_(check_vdb_layout(path_)) {
+  for (const VdbGridEntry& g : layout_.grids) names_.push_back(g.unique_name);
   reading_vdb(path_, [this] {
     openvdb::io::File file(path_);
     file.open(false);
@@ -137,9 +140,17 @@ openvdb::GridBase::Ptr VdbFile::read_grid(int i) const {
     throw InvalidArgument(path_ + ": grid index " + std::to_string(i) +
                           " out of range (the file has " + std::to_string(grid_count()) +
                           " grids)");
-  // The file may have been cut short or replaced since it was opened.
-  if (read_vdb_grid_table(path_) != names_)
+  // The file may have been cut short or replaced since it was opened; what
+  // OpenVDB reads next is walked first, as it is now.
+  const VdbLayout now = check_vdb_layout(path_);
+  const auto same = [](const VdbGridEntry& a, const VdbGridEntry& b) {
+    return a.unique_name == b.unique_name && a.type == b.type && a.grid_pos == b.grid_pos &&
+           a.end_pos == b.end_pos;
+  };
+  if (now.file_size != layout_.file_size ||
+      !std::equal(now.grids.begin(), now.grids.end(), layout_.grids.begin(), layout_.grids.end(), same))
     throw FormatError(path_ + ": the file changed after it was opened; open it again");
+  check_vdb_grid(path_, layout_, i, default_memory_budget());
   return reading_vdb(path_, [&] {
     openvdb::io::File file(path_);
     // Without delayed loading every value is read now, not on first access

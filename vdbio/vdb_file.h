@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "libcore/volume.h"
+#include "vdb_check.h"
 
 // Declared rather than included: the C API sources include this header,
 // and OpenVDB's headers would put default-visibility symbols into them.
@@ -22,8 +23,9 @@ class GridBase;
 
 namespace isoform::vdbio {
 
-// Opening checks the file's layout (see vdb_layout.h) and reads every grid's
-// metadata; voxel data are read when a grid is described or loaded, each
+// Opening walks the file's header, grid table, metadata and transforms
+// (vdb_check.h) before OpenVDB reads every grid's metadata; each grid's tree
+// is walked before OpenVDB reads it; voxel data are read when a grid is described or loaded, each
 // time through a fresh io::File, so calls may run on several threads at
 // once. The (small) facts are kept, and the grid last read for its facts
 // until it is loaded (so that describing a grid, then loading it, reads it
@@ -51,6 +53,7 @@ class VdbFile : public VolumeFile {
   std::string describe(int i) const;  // "PATH: grid 'NAME'" for messages
 
   std::string path_;
+  VdbLayout layout_;                                             // as checked at open
   std::vector<std::string> names_;                               // as io::File::readGrid takes them
   std::vector<std::shared_ptr<const openvdb::GridBase>> grids_;  // metadata and transform only
   mutable std::mutex mutex_;

@@ -211,5 +211,39 @@ TEST(DenseRead, NrrdErrors) {
   EXPECT_THROW(read_nrrd(dir.file("none.nrrd")), IoError);
 }
 
+// Headers whose sizes the data cannot fill are refused before Teem
+// allocates the array they state.
+TEST(DenseRead, NrrdSizesAreCheckedAgainstTheData) {
+  TempDir dir;
+  struct Case {
+    std::string name, bytes, message;
+  } cases[] = {
+      {"huge.nrrd", "NRRD0004\ntype: float\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n1234",
+       ": NRRD data of 100000 100000 100000 float samples need 4000000000000000 bytes, more than 4 bytes of raw "
+       "data in "},
+      {"bomb.nrrd",
+       "NRRD0004\ntype: float\ndimension: 3\nsizes: 1000 1000 1000\nencoding: gzip\n\n" + std::string(100, 'x'),
+       ": NRRD data of 1000 1000 1000 float samples need 4000000000 bytes, more than 100 bytes of gzip data"},
+      {"overflow.nrrd",
+       "NRRD0004\ntype: float\ndimension: 3\nsizes: 4294967296 4294967296 4294967296\nencoding: raw\n\n",
+       ": NRRD sizes \"4294967296 4294967296 4294967296\""},
+      {"text.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 10 10 10\nencoding: ascii\n\n1 2 3\n",
+       ": NRRD data of 10 10 10 double samples need 8000 bytes, more than 6 bytes of ascii data"},
+      {"version.nrrd", "NRRD0009\ntype: float\n\n", ": not a NRRD file (its first line is not NRRD0001 to NRRD0005)"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    write_bytes(dir.file(c.name), c.bytes);
+    const std::string message = error_of<FormatError>([&] { read_nrrd(dir.file(c.name)); });
+    EXPECT_EQ(message.rfind(dir.file(c.name) + c.message, 0), 0u) << message;
+  }
+  const std::string list = dir.file("list.nhdr");
+  write_bytes(list, "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\ndata file: LIST\na.raw\n");
+  EXPECT_NE(error_of<Unsupported>([&] { read_nrrd(list); }).find("data lie in several files"), std::string::npos);
+  const std::string zero = dir.file("zero.nhdr");
+  write_bytes(zero, "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\ndata file: /dev/zero\n");
+  EXPECT_EQ(error_of<IoError>([&] { read_nrrd(zero); }), "/dev/zero: not a regular file");
+}
+
 }  // namespace
 }  // namespace isoform::vdbio
