@@ -266,6 +266,18 @@ def case_volume_object_errors():
     expect_operator_error(bpy.ops.object.isoform_contour, ["empty_volume", "no grids"])
 
 
+def case_hostile_files():
+    """Each hostile VDB through the import operator: an error report naming
+    the file, and the scene unchanged. (Not as a Volume object's file: Blender
+    then reads the file with its own OpenVDB, which isoform cannot guard.)"""
+    import json
+    with open(os.path.join(ARGS.scratch, "hostile", "messages.json")) as f:
+        files = json.load(f)
+    expect(len(files) == 5, f"{len(files)} hostile files")
+    for path, message in files.items():
+        expect_operator_error(bpy.ops.import_scene.isoform_vdb, [path, message], filepath=path)
+
+
 # ---------------------------------------------------------------- render
 
 def frame_scene(obj, size, samples):
@@ -329,7 +341,7 @@ GROUPS = {
                case_invoke_in_background_runs_execute,
                case_sidebar_settings_used_when_unset, case_volume_object_from_file,
                case_volume_in_memory_saved_to_temporary_file],
-    "errors": [case_missing_file, case_vector_grid, case_volume_object_errors],
+    "errors": [case_missing_file, case_vector_grid, case_volume_object_errors, case_hostile_files],
     "render": [case_cycles_render_not_empty],
 }
 

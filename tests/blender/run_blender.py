@@ -23,6 +23,9 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+import hostile_files  # noqa: E402
+
 BLENDER_TIMEOUT_SECONDS = 300
 
 
@@ -87,6 +90,12 @@ def main():
         vertices, triangles = smoke_counts(args, tmp)
         vector = os.path.join(tmp, "velocity.vdb")
         subprocess.run([args.vector_vdb_maker, vector], check=True, timeout=60)
+        # The hostile VDBs of tests/tools/hostile_files.py and what each
+        # error must say, for the errors group.
+        hostile = os.path.join(tmp, "hostile")
+        os.makedirs(hostile)
+        with open(os.path.join(hostile, "messages.json"), "w") as f:
+            json.dump(hostile_files.write_hostile_vdbs(args.cli, hostile), f)
         env = dict(os.environ)
         env.pop("ISOFORM_LIBRARY", None)
         env["BLENDER_USER_CONFIG"] = os.path.join(tmp, "config")

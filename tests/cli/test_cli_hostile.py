@@ -15,7 +15,10 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+import hostile_files  # noqa: E402
 import test_cli  # noqa: E402
 from test_cli import expect, run_groups  # noqa: E402
 
@@ -61,79 +64,12 @@ def expect_refused(tmp, path, commands, message):
 VDB_COMMANDS = [("info", ""), ("contour", ".ply"), ("convert", ".vdb")]
 
 
-def fog_vdb(tmp):
-    """A 32^3 fog volume of varying values, written by isoform convert; its bytes."""
-    raw = os.path.join(tmp, "fog.raw")
-    with open(raw, "wb") as f:
-        f.write(struct.pack("<32768f", *[float((i * 7919) % 97) for i in range(32768)]))
-    vdb = os.path.join(tmp, "fog.vdb")
-    test_cli.run("convert", raw, "--dims", "32,32,32", "--type", "f32", "-o", vdb)
-    with open(vdb, "rb") as f:
-        data = bytearray(f.read())
-    os.remove(raw)
-    os.remove(vdb)
-    return data
-
-
-def leaf_chunk(data):
-    """Where the first leaf's blosc chunk size lies: an int64 n, then a blosc
-    header saying 2,048 bytes decoded from n."""
-    for at in range(len(data) - 24):
-        n = struct.unpack_from("<q", data, at)[0]
-        if 16 < n < 100000 and data[at + 8] == 2 and struct.unpack_from("<I", data, at + 12)[0] == 2048 \
-                and struct.unpack_from("<I", data, at + 20)[0] == n:
-            return at
-    raise test_cli.CaseFailure("no leaf chunk in the fog volume")
-
-
-def string_at(data, text, start=0):
-    """Where the length field of the length-prefixed string text lies."""
-    at = data.find(struct.pack("<I", len(text)) + text.encode(), start)
-    expect(at >= 0, f"no string {text!r}")
-    return at
-
-
-def hostile_vdb(tmp, name, change):
-    data = fog_vdb(tmp)
-    change(data)
-    path = os.path.join(tmp, name)
-    with open(path, "wb") as f:
-        f.write(data)
-    return path
-
-
-def case_negative_chunk_size(tmp):
-    """OpenVDB's bloscFromStream would write 100,000 bytes into 2,048."""
-    path = hostile_vdb(tmp, "negative.vdb", lambda d: struct.pack_into("<q", d, leaf_chunk(d), -100000))
-    expect_refused(tmp, path, VDB_COMMANDS[1:], "a raw chunk of 100000 bytes where 2048 are expected")
-    # info reads every grid's facts, which read the tree.
-    expect_refused(tmp, path, VDB_COMMANDS[:1], "a raw chunk of 100000 bytes")
-
-
-def case_huge_chunk_size(tmp):
-    path = hostile_vdb(tmp, "huge.vdb", lambda d: struct.pack_into("<q", d, leaf_chunk(d), 10 ** 15))
-    expect_refused(tmp, path, VDB_COMMANDS, "a compressed chunk at byte")
-
-
-def case_huge_type_name_length(tmp):
-    """GridDescriptor::read would allocate 7.5 GB."""
-    def change(d):
-        struct.pack_into("<I", d, string_at(d, "density") + 4 + 7, 1918107664)
-    path = hostile_vdb(tmp, "typename.vdb", change)
-    expect_refused(tmp, path, VDB_COMMANDS, "a grid type name at byte")
-
-
-def case_huge_metadata_string(tmp):
-    """StringMetadata::readValue would allocate 2 GB."""
-    def change(d):
-        struct.pack_into("<I", d, string_at(d, "string", string_at(d, "class")) + 10, 2000000000)
-    path = hostile_vdb(tmp, "metadata.vdb", change)
-    expect_refused(tmp, path, VDB_COMMANDS, "a metadata value at byte")
-
-
-def case_lying_blosc_header(tmp):
-    path = hostile_vdb(tmp, "blosc.vdb", lambda d: struct.pack_into("<I", d, leaf_chunk(d) + 12, 4096))
-    expect_refused(tmp, path, VDB_COMMANDS, "whose header says 4096 bytes")
+def case_hostile_vdbs(tmp):
+    """Each hostile VDB of tests/tools/hostile_files.py, through each command
+    that reads a VDB (info describes every grid, which reads its tree)."""
+    files = hostile_files.write_hostile_vdbs(test_cli.BINARY, tmp)
+    for path, message in files.items():
+        expect_refused(tmp, path, VDB_COMMANDS, message)
 
 
 def stl_bytes(header, count, triangles):
@@ -175,8 +111,7 @@ def case_nrrd_sizes_beyond_the_data(tmp):
 
 
 GROUPS = {
-    "hostile_vdb": [case_negative_chunk_size, case_huge_chunk_size, case_huge_type_name_length,
-                    case_huge_metadata_string, case_lying_blosc_header],
+    "hostile_vdb": [case_hostile_vdbs],
     "hostile_mesh_nrrd": [case_stl_subnormal_repeated_vertex, case_stl_solid_header_lying_count,
                           case_nrrd_sizes_beyond_the_data],
 }

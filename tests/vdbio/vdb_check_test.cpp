@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <openvdb/io/Compression.h>
 
+#include <malloc.h>
+
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -14,6 +16,7 @@
 #include "libcore/errors.h"
 #include "test_support.h"
 #include "vdb_samples.h"
+#include "vdbio/dense_read.h"
 #include "vdbio/input_file.h"
 #include "vdbio/vdb_file.h"
 
@@ -194,6 +197,44 @@ TEST(VdbCheck, ATreeBeyondTheBudgetIsRefused) {
   EXPECT_NE(message.find("a grid of 27 leaves would take 0.3 MiB in memory, beyond the budget of 0.2 MiB"),
             std::string::npos)
       << message;
+}
+
+}  // namespace
+}  // namespace isoform::vdbio
+
+namespace isoform::vdbio {
+namespace {
+
+// Bytes in use on the heap (glibc's count of allocated, not yet freed).
+size_t heap_in_use() { return mallinfo2().uordblks; }
+
+// A host such as Blender pays every failed open: a thousand of them, after
+// a few to warm up caches, must hold no more memory than one. The files fail
+// where isoform checks them, inside OpenVDB (a leaf chunk that does not
+// decode), and inside Teem (a header it refuses).
+TEST(VdbCheck, AThousandFailedOpensHoldNoMoreMemoryThanOne) {
+  TempDir dir;
+  std::string corrupt = fog_bytes(dir);
+  const size_t chunk = first_leaf_chunk(corrupt);
+  for (size_t k = 24; k < 64; ++k) corrupt[chunk + k] = char(0xff);  // inside the compressed data
+  std::string negative = fog_bytes(dir);
+  store<int64_t>(negative, first_leaf_chunk(negative), -100000);
+  write_bytes(dir.file("corrupt.vdb"), corrupt);
+  write_bytes(dir.file("negative.vdb"), negative);
+  write_bytes(dir.file("garbled.nrrd"), "NRRD0004\ntype: nonsense\ndimension: 3\n\n");
+  const std::vector<std::function<void()>> opens = {
+      [&] { open_and_read_all(dir.file("corrupt.vdb")); },
+      [&] { open_and_read_all(dir.file("negative.vdb")); },
+      [&] { read_nrrd(dir.file("garbled.nrrd")); },
+  };
+  for (size_t k = 0; k < opens.size(); ++k) {
+    SCOPED_TRACE(k);
+    for (int i = 0; i < 5; ++i) EXPECT_ANY_THROW(opens[k]());
+    const size_t before = heap_in_use();
+    for (int i = 0; i < 1000; ++i) EXPECT_ANY_THROW(opens[k]());
+    const size_t after = heap_in_use();
+    EXPECT_LT(after, before + (64 << 10)) << "grew by " << (after - before) << " bytes";
+  }
 }
 
 }  // namespace
