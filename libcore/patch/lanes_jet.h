@@ -25,12 +25,12 @@ ISOFORM_JET_INLINE L lane_sqrt(L x) {
 
 // Rows a, b, c, d of a 4 x 4 matrix become its columns.
 ISOFORM_JET_INLINE void transpose4(L& a, L& b, L& c, L& d) {
-  const L t0 = __builtin_shuffle(a, b, M{0, 4, 2, 6}), t1 = __builtin_shuffle(a, b, M{1, 5, 3, 7});
-  const L t2 = __builtin_shuffle(c, d, M{0, 4, 2, 6}), t3 = __builtin_shuffle(c, d, M{1, 5, 3, 7});
-  a = __builtin_shuffle(t0, t2, M{0, 1, 4, 5});
-  b = __builtin_shuffle(t1, t3, M{0, 1, 4, 5});
-  c = __builtin_shuffle(t0, t2, M{2, 3, 6, 7});
-  d = __builtin_shuffle(t1, t3, M{2, 3, 6, 7});
+  const L t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6), t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+  const L t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6), t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+  a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+  b = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+  c = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+  d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
 // sin and cos per lane, to about an ulp of libm's: x = k pi/2 + r with
