@@ -16,6 +16,7 @@
 #include "input_file.h"
 #include "nrrd_check.h"
 #include "libcore/errors.h"
+#include "libcore/out_of_memory.h"
 
 namespace isoform::vdbio {
 
@@ -217,10 +218,10 @@ std::shared_ptr<DenseVolume> read_raw(const std::string& path, const RawLayout& 
       Affine::scale_translate(layout.spacing, layout.origin), path);
 }
 
-bool has_nrrd_magic(const std::string& path) { return read_prefix(path, 4) == "NRRD"; }
+namespace {
 
-std::shared_ptr<DenseVolume> read_nrrd(const std::string& path) {
-  check_nrrd_header(path, default_memory_budget());
+// Teem's read of a checked file, converted to float.
+std::shared_ptr<DenseVolume> load_nrrd(const std::string& path) {
   Index3 dims;
   Affine affine;
   std::vector<float> values;
@@ -240,6 +241,19 @@ std::shared_ptr<DenseVolume> read_nrrd(const std::string& path) {
   }
   return std::make_shared<DenseVolume>("density", GridClass::Fog, std::move(values), dims, affine,
                                        path);
+}
+
+}  // namespace
+
+bool has_nrrd_magic(const std::string& path) { return read_prefix(path, 4) == "NRRD"; }
+
+std::shared_ptr<DenseVolume> read_nrrd(const std::string& path) {
+  check_nrrd_header(path, default_memory_budget());
+  try {
+    return load_nrrd(path);
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemory(path + ": out of memory while reading it");
+  }
 }
 
 }  // namespace isoform::vdbio

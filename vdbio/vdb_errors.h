@@ -4,16 +4,19 @@
 
 #include <openvdb/Exceptions.h>
 
+#include <new>
 #include <string>
 #include <utility>
 
 #include "libcore/errors.h"
+#include "libcore/out_of_memory.h"
 
 namespace isoform::vdbio {
 
 // Runs body, which reads the OpenVDB file at path, and turns OpenVDB's
 // exceptions into FormatError (damaged data) or Unsupported (a grid or
-// metadata type this OpenVDB does not know).
+// metadata type this OpenVDB does not know), and running out of memory
+// into OutOfMemory naming the file.
 template <class Body>
 decltype(auto) reading_vdb(const std::string& path, Body&& body) {
   try {
@@ -22,6 +25,8 @@ decltype(auto) reading_vdb(const std::string& path, Body&& body) {
     throw Unsupported(path + ": " + e.what());
   } catch (const openvdb::Exception& e) {
     throw FormatError(path + ": truncated or damaged OpenVDB file (" + e.what() + ")");
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemory(path + ": out of memory while reading it");
   }
 }
 

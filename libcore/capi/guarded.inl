@@ -4,6 +4,7 @@
 #include <new>
 
 #include "../errors.h"
+#include "../out_of_memory.h"
 
 namespace isoform::capi {
 
@@ -22,6 +23,8 @@ isoform_status guarded(Body&& body) noexcept {
     return fail(ISOFORM_ERR_UNSUPPORTED, e.what());
   } catch (const Cancelled& e) {
     return fail(ISOFORM_ERR_CANCELLED, e.what());
+  } catch (const OutOfMemory& e) {
+    return fail(ISOFORM_ERR_OUT_OF_MEMORY, e.what());
   } catch (const std::bad_alloc&) {
     return fail(ISOFORM_ERR_OUT_OF_MEMORY, "out of memory");
   } catch (const std::exception& e) {
