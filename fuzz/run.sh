@@ -5,7 +5,8 @@
 # finds in build-fuzz/corpus/<target> for the next run.
 #
 # usage: fuzz/run.sh [SECONDS_PER_TARGET] [TARGET ...]
-#   default: 600 seconds, every target (vdb nrrd raw ply obj stl)
+#   default: 600 seconds, every target (vdb nrrd raw ply obj stl);
+#   FUZZ_JOBS=N runs N jobs at once (default: one per core)
 #
 # Limits per input, as the issue of hostile files states them: 10 s, 1 GiB
 # of memory and no single allocation over 1 GiB; leaks are findings too.
@@ -30,7 +31,7 @@ seeds=build-fuzz/seeds
 rm -rf "$seeds"
 build-fuzz/fuzz/isoform_fuzz_corpus "$seeds"
 
-jobs=$(nproc)
+jobs=${FUZZ_JOBS:-$(nproc)}
 status=0
 for t in "${targets[@]}"; do
   corpus=build-fuzz/corpus/$t findings=build-fuzz/findings/$t

@@ -22,12 +22,13 @@ constexpr const char* kHalfSuffix = "_HalfFloat";
 // Fixed-size metadata types: OpenVDB reads sizeof(T) bytes whatever length
 // the file gives, so the length must be exactly that or the stream would be
 // read out of step. "ptidx32/64" are OpenVDB's point-index aliases of int32
-// and int64.
+// and int64, and so are "ptdataidx32/64".
 const std::map<std::string, uint32_t>& fixed_metadata_sizes() {
   static const std::map<std::string, uint32_t> sizes = {
       {"bool", 1},   {"float", 4},  {"double", 8},  {"int32", 4},  {"int64", 8},   {"vec2i", 8},
       {"vec2s", 8},  {"vec2d", 16}, {"vec3i", 12},  {"vec3s", 12}, {"vec3d", 24},  {"vec4i", 16},
-      {"vec4s", 16}, {"vec4d", 32}, {"mat4s", 64},  {"mat4d", 128}, {"ptidx32", 4}, {"ptidx64", 8}};
+      {"vec4s", 16}, {"vec4d", 32}, {"mat4s", 64},  {"mat4d", 128}, {"ptidx32", 4}, {"ptidx64", 8},
+      {"ptdataidx32", 4}, {"ptdataidx64", 8}};
   return sizes;
 }
 
@@ -182,6 +183,47 @@ std::string readable_name(const std::string& unique) {
   return sep == std::string::npos ? unique : unique.substr(0, sep) + "[" + unique.substr(sep + 1) + "]";
 }
 
+// The grid io::File::findDescriptor picks for a name as readGrid takes it
+// (with its stringAsUniqueName and stripSuffix), or -1: the first grid of
+// that name, else the one whose stored name matches "name[N]".
+int find_descriptor(const std::vector<std::string>& stored, const std::string& name) {
+  std::string unique = name;
+  if (!unique.empty() && unique.back() == ']' && unique.find('[') != std::string::npos) {
+    unique.pop_back();
+    unique.replace(unique.find('['), 1, "\x1e");
+  }
+  const auto strip = [](const std::string& n) { return n.substr(0, n.find('\x1e')); };
+  std::vector<int> range;
+  for (size_t i = 0; i < stored.size(); ++i)
+    if (strip(stored[i]) == name) range.push_back(int(i));
+  if (range.empty())
+    for (size_t i = 0; i < stored.size(); ++i)
+      if (strip(stored[i]) == strip(unique)) range.push_back(int(i));
+  if (range.empty()) return -1;
+  if (name == unique) return range.front();
+  for (const int i : range)
+    if (stored[size_t(i)] == unique || stored[size_t(i)] == name) return i;
+  return -1;
+}
+
+// Every grid must be the one OpenVDB finds by the name isoform will ask it
+// for, and an instance's parent the grid OpenVDB finds by the parent's
+// name: otherwise OpenVDB would read a tree other than the one walked.
+void check_names(const ByteCursor& in, std::vector<VdbGridEntry>& grids) {
+  std::vector<std::string> stored;
+  for (const VdbGridEntry& g : grids) stored.push_back(g.unique_name);
+  for (size_t i = 0; i < grids.size(); ++i) {
+    VdbGridEntry& g = grids[i];
+    if (find_descriptor(stored, readable_name(g.unique_name)) != int(i))
+      in.fail("grid '" + readable_name(g.unique_name) + "' cannot be told apart from another grid's name");
+    if (g.parent.empty()) continue;
+    g.parent_index = find_descriptor(stored, readable_name(g.parent));
+    if (g.parent_index < 0 || !grids[size_t(g.parent_index)].parent.empty())
+      in.fail("grid '" + readable_name(g.unique_name) + "' instances '" + readable_name(g.parent) +
+              "', which the file lacks or which is an instance itself");
+  }
+}
+
 }  // namespace
 
 VdbLayout check_vdb_layout(const std::string& path) {
@@ -208,8 +250,9 @@ VdbLayout check_vdb_layout(const std::string& path) {
     check_metadata(in);
     check_transform(in);
     in.limit(in.size());
-    if (!g.parent.empty() && !names.count(g.parent))
-      in.fail("grid '" + readable_name(g.unique_name) + "' instances '" + g.parent + "', which the file lacks");
+  }
+  check_names(in, layout.grids);
+  for (VdbGridEntry& g : layout.grids) {
     g.unique_name = readable_name(g.unique_name);
     g.parent = readable_name(g.parent);
   }
@@ -218,14 +261,7 @@ VdbLayout check_vdb_layout(const std::string& path) {
 
 void check_vdb_grid(const std::string& path, const VdbLayout& layout, int i, uint64_t memory_budget) {
   const VdbGridEntry& g = layout.grids.at(size_t(i));
-  if (!g.parent.empty()) {
-    const auto parent = std::find_if(layout.grids.begin(), layout.grids.end(),
-                                     [&](const VdbGridEntry& e) { return e.unique_name == g.parent; });
-    if (parent == layout.grids.end() || !parent->parent.empty())
-      throw FormatError(path + ": truncated or damaged OpenVDB file (grid '" + g.unique_name +
-                        "' instances a grid that is missing or an instance itself)");
-    return check_vdb_grid(path, layout, int(parent - layout.grids.begin()), memory_budget);
-  }
+  if (g.parent_index >= 0) return check_vdb_grid(path, layout, g.parent_index, memory_budget);
   ByteCursor in(path, "truncated or damaged OpenVDB file");
   if (in.size() != layout.file_size)
     throw FormatError(path + ": the file changed after it was opened; open it again");

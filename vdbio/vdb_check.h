@@ -23,9 +23,16 @@ struct VdbGridEntry {
   std::string unique_name;  // as io::File::readGrid takes it ("name[1]" for a second "name")
   std::string type;         // without the half-float suffix, e.g. "Tree_float_5_4_3"
   std::string parent;       // the grid this one instances, or empty
+  int parent_index = -1;    // its index, as OpenVDB finds it by that name
   bool half = false;        // real values stored as 16-bit floats
   int64_t grid_pos = 0, block_pos = 0, end_pos = 0;
 };
+
+inline bool operator==(const VdbGridEntry& a, const VdbGridEntry& b) {
+  return a.unique_name == b.unique_name && a.type == b.type && a.parent == b.parent &&
+         a.parent_index == b.parent_index && a.half == b.half && a.grid_pos == b.grid_pos &&
+         a.block_pos == b.block_pos && a.end_pos == b.end_pos;
+}
 
 struct VdbLayout {
   uint32_t version = 0;

@@ -143,14 +143,9 @@ openvdb::GridBase::Ptr VdbFile::read_grid(int i) const {
   // The file may have been cut short or replaced since it was opened; what
   // OpenVDB reads next is walked first, as it is now.
   const VdbLayout now = check_vdb_layout(path_);
-  const auto same = [](const VdbGridEntry& a, const VdbGridEntry& b) {
-    return a.unique_name == b.unique_name && a.type == b.type && a.grid_pos == b.grid_pos &&
-           a.end_pos == b.end_pos;
-  };
-  if (now.file_size != layout_.file_size ||
-      !std::equal(now.grids.begin(), now.grids.end(), layout_.grids.begin(), layout_.grids.end(), same))
+  if (now.file_size != layout_.file_size || now.grids != layout_.grids)
     throw FormatError(path_ + ": the file changed after it was opened; open it again");
-  check_vdb_grid(path_, layout_, i, default_memory_budget());
+  check_vdb_grid(path_, now, i, default_memory_budget());
   return reading_vdb(path_, [&] {
     openvdb::io::File file(path_);
     // Without delayed loading every value is read now, not on first access

@@ -65,6 +65,7 @@ std::bitset<Bits> read_mask(ByteCursor& in, const char* what) {
 
 struct Counts {
   uint64_t root_entries = 0, upper = 0, lower = 0, leaves = 0;
+  uint64_t tile_blocks = 0;  // 8^3 blocks under active tiles (vdbio's active bricks list them)
 };
 
 // What one root child holds for the buffer pass: its leaves' active counts
@@ -82,7 +83,7 @@ class TreeWalk {
 
   void run(uint64_t memory_budget) {
     in_.get<int32_t>("the tree's buffer count");
-    in_.skip(value_.size, "the background value");
+    raw_values(1, "the background value");
     const uint32_t tiles = in_.get<uint32_t>("the root's tile count");
     const uint32_t children = in_.get<uint32_t>("the root's child count");
     if (tiles == 0 && children == 0) return;
@@ -91,7 +92,8 @@ class TreeWalk {
     std::map<std::array<int32_t, 3>, size_t> table;  // as RootNode's, sorted by origin
     for (uint32_t t = 0; t < tiles; ++t) {
       add_root_entry(table, SIZE_MAX);
-      in_.skip(value_.size + 1, "a root tile");
+      raw_values(1, "a root tile's value");
+      if (read_bool("a root tile's state")) counts_.tile_blocks += uint64_t(1) << 27;  // (4096 / 8)^3
     }
     for (uint32_t c = 0; c < children; ++c) {
       add_root_entry(table, children_.size());
@@ -122,6 +124,7 @@ class TreeWalk {
     ++counts_.upper;
     const auto children = read_mask<32768>(in_, "a node's child mask");
     const auto values = read_mask<32768>(in_, "a node's value mask");
+    counts_.tile_blocks += (values & ~children).count() << 12;  // (128 / 8)^3 blocks each
     node_values(32768, values.count(), /*decode=*/true);
     for (size_t i = 0; i < 32768; ++i)
       if (children[i]) {
@@ -137,6 +140,7 @@ class TreeWalk {
     ++counts_.lower;
     const auto children = read_mask<4096>(in_, "a node's child mask");
     const auto values = read_mask<4096>(in_, "a node's value mask");
+    counts_.tile_blocks += (values & ~children).count();
     node_values(4096, values.count(), /*decode=*/true);
     for (size_t i = 0; i < 4096; ++i)
       if (children[i]) {
@@ -170,8 +174,8 @@ class TreeWalk {
   void node_values(uint64_t count, uint64_t active, bool decode) {
     const int8_t flag = in_.get<int8_t>("a node's value flag");
     if (flag < 0 || flag > kNoMaskAndAllValues) in_.fail("a node's value flag " + std::to_string(flag));
-    if (flag == 2 || flag == 4 || flag == 5) in_.skip(value_.size, "an inactive value");
-    if (flag == 5) in_.skip(value_.size, "an inactive value");
+    if (flag == 2 || flag == 4 || flag == 5) raw_values(1, "an inactive value");
+    if (flag == 5) raw_values(1, "an inactive value");
     if (flag >= kMaskAndNoInactive && flag <= 5) in_.skip(count / 8, "a selection mask");
     const uint64_t stored = (format_.compression & kActiveMask) && flag != kNoMaskAndAllValues ? active : count;
     const bool half = format_.half && value_.half_size;
@@ -179,9 +183,31 @@ class TreeWalk {
     if (half && stored == 0) return;  // HalfReader reads nothing then, not even a chunk size
     if (format_.compression & (kBlosc | kZip))
       chunk(bytes, decode);
+    else if (decode && bools())
+      raw_values(stored, "a node's values");
     else
       in_.skip(bytes, "a node's values");
   }
+
+  // Values read where OpenVDB reads them raw; a bool must be 0 or 1 (any
+  // other byte in a bool is undefined behaviour once loaded).
+  void raw_values(uint64_t count, const char* what) {
+    if (!bools()) return in_.skip(count * value_.size, what);
+    in_.need(count, what);
+    std::vector<unsigned char> bytes(count);
+    in_.read(bytes.data(), bytes.size(), what);
+    check_bools(bytes.data(), bytes.size(), what);
+  }
+  bool read_bool(const char* what) {
+    const unsigned char b = in_.get<unsigned char>(what);
+    check_bools(&b, 1, what);
+    return b != 0;
+  }
+  void check_bools(const unsigned char* bytes, size_t n, const char* what) const {
+    for (size_t i = 0; i < n; ++i)
+      if (bytes[i] > 1) in_.fail(std::string(what) + " holds " + std::to_string(bytes[i]) + " where a bool is 0 or 1");
+  }
+  bool bools() const { return value_.leaf != LeafKind::Values; }
 
   // bloscFromStream / unzipFromStream: an int64 size, negative (or zero)
   // for raw bytes, positive for a compressed chunk.
@@ -191,6 +217,7 @@ class TreeWalk {
       if (n == INT64_MIN || uint64_t(-n) != bytes)
         in_.fail("a raw chunk of " + std::to_string(n == INT64_MIN ? 0 : -n) + " bytes where " +
                  std::to_string(bytes) + " are expected");
+      if (decode && bools()) return raw_values(bytes, "a node's values");
       return in_.skip(bytes, "a chunk");
     }
     in_.need(uint64_t(n), "a compressed chunk");
@@ -214,15 +241,19 @@ class TreeWalk {
       if (uncompress(plain.data(), &got, packed.data(), uLong(n)) != Z_OK || got != bytes)
         in_.fail("a node's values do not decode (zlib)");
     }
+    if (bools()) check_bools(plain.data(), bytes, "a node's values");
   }
 
   // What OpenVDB will hold once it has read the tree: each node's table
-  // (a union of a value and a pointer per entry), masks, leaf buffers.
+  // (a union of a value and a pointer per entry), masks, leaf buffers; and
+  // the list of 8^3 blocks under active tiles that vdbio makes for a grid's
+  // active set (a single active root tile is 2^27 of them).
   void check_budget(uint64_t budget) const {
     const uint64_t entry = std::max<uint64_t>(value_.size, 8);
     const uint64_t leaf = value_.leaf == LeafKind::Values ? 512 * value_.size + 96 : 160;
     const uint64_t total = counts_.root_entries * 96 + counts_.upper * (32768 * entry + 8192) +
-                           counts_.lower * (4096 * entry + 1024) + counts_.leaves * leaf;
+                           counts_.lower * (4096 * entry + 1024) + counts_.leaves * leaf +
+                           counts_.tile_blocks * 16;
     const auto mib = [](uint64_t bytes) {
       char text[32];
       std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(1 << 20));

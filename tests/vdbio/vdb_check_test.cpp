@@ -53,6 +53,17 @@ void open_and_read_all(const std::string& path) {
   for (int i = 0; i < file->grid_count(); ++i) dynamic_cast<const VdbFile&>(*file).read_grid(i);
 }
 
+// The message of whatever body throws, or "".
+template <class Body>
+std::string error_of_any(Body&& body) {
+  try {
+    body();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(VdbCheck, EveryKindOpenVdbWritesPassesAndReadsBackWhole) {
   TempDir dir;
   for (const test::VdbSample& sample : test::vdb_samples())
@@ -60,6 +71,8 @@ TEST(VdbCheck, EveryKindOpenVdbWritesPassesAndReadsBackWhole) {
       SCOPED_TRACE(sample.name + ", compression " + std::to_string(compression));
       const std::string path = dir.file("sample.vdb");
       test::write_vdb_sample(sample, compression, path);
+      const std::string refused = error_of_any([&] { open_and_read_all(path); });
+      ASSERT_EQ(refused, "") << sample.name << ", compression " << compression;
       const VdbLayout layout = check_vdb_layout(path);
       ASSERT_EQ(layout.grids.size(), sample.grids.size());
       const auto file = open_vdb(path);
@@ -185,6 +198,42 @@ TEST(VdbCheck, ZipChunksAreCheckedToo) {
   write_bytes(path, bytes);
   const std::string message = error_of<FormatError>([&] { open_and_read_all(path); });
   EXPECT_NE(message.find("do not decode (zlib)"), std::string::npos) << message;
+}
+
+// A bool that is neither false nor true (undefined behaviour once OpenVDB
+// loads it): a root tile's state of 2.
+TEST(VdbCheck, BoolsThatAreNeitherFalseNorTrueAreRefused) {
+  TempDir dir;
+  const std::string path = dir.file("float.vdb");
+  test::write_vdb_sample(test::vdb_samples().front(), openvdb::io::COMPRESS_BLOSC, path);
+  std::string bytes = read_bytes(path);
+  // The root tile at (4096, 0, 0) of value 1.5, active.
+  std::string tile(12 + 4 + 1, '\0');
+  store<int32_t>(tile, 0, 4096);
+  store<float>(tile, 12, 1.5f);
+  tile[16] = 1;
+  const size_t at = bytes.find(tile);
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 16] = 2;
+  write_bytes(path, bytes);
+  const std::string message = error_of<FormatError>([&] { open_and_read_all(path); });
+  EXPECT_NE(message.find("a root tile's state holds 2 where a bool is 0 or 1"), std::string::npos) << message;
+}
+
+// Two grids whose names OpenVDB cannot tell apart ("a" stored after "a",
+// numbered by OpenVDB's separator): readGrid("a") would give the first
+// grid's tree for the second.
+TEST(VdbCheck, GridsOpenVdbCannotTellApartAreRefused) {
+  TempDir dir;
+  auto first = openvdb::FloatGrid::create(0.0f), second = openvdb::FloatGrid::create(0.0f);
+  first->setName(std::string("a") + '\x1e' + "0");
+  second->setName("a");
+  first->tree().setValue(openvdb::Coord(0), 1.0f);
+  second->tree().setValue(openvdb::Coord(9), 2.0f);
+  const std::string path = dir.file("names.vdb");
+  test::write_grids(path, {first, second});
+  const std::string message = error_of<FormatError>([&] { check_vdb_layout(path); });
+  EXPECT_NE(message.find("cannot be told apart from another grid's name"), std::string::npos) << message;
 }
 
 TEST(VdbCheck, ATreeBeyondTheBudgetIsRefused) {
