@@ -3,12 +3,15 @@
 // before it reads a byte of data, and follows any "data file" it names.
 #include "nrrd_check.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "input_file.h"
 #include "libcore/errors.h"
@@ -92,6 +95,41 @@ uint64_t parse_count(const std::string& path, const std::string& field, const st
   return v;
 }
 
+// Teem's gzip reader leaks its stream when the data end early or do not
+// decode, so the data are inflated here first: they must give at least the
+// array's bytes (several gzip members after one another are read on, as
+// gzip itself reads them).
+void check_gzip_data(const std::string& path, const std::string& data, uint64_t start, uint64_t bytes) {
+  std::ifstream in(data, std::ios::binary);
+  in.seekg(std::streamoff(start));
+  z_stream z{};
+  if (inflateInit2(&z, 15 + 32) != Z_OK) throw FormatError(path + ": cannot start inflating its gzip data");
+  std::vector<unsigned char> packed(size_t(1) << 16), plain(size_t(1) << 18);
+  uint64_t got = 0;
+  int status = Z_OK;
+  while (got < bytes) {
+    if (z.avail_in == 0) {
+      in.read(reinterpret_cast<char*>(packed.data()), std::streamsize(packed.size()));
+      z.next_in = packed.data();
+      z.avail_in = uInt(in.gcount());
+      if (z.avail_in == 0) break;
+    }
+    z.next_out = plain.data();
+    z.avail_out = uInt(plain.size());
+    status = inflate(&z, Z_NO_FLUSH);
+    got += plain.size() - z.avail_out;
+    if (status == Z_STREAM_END) {
+      if (inflateReset(&z) != Z_OK) break;
+    } else if (status != Z_OK && status != Z_BUF_ERROR) {
+      break;
+    }
+  }
+  inflateEnd(&z);
+  if (got < bytes)
+    throw FormatError(path + ": NRRD gzip data give " + std::to_string(got) + " of the " + std::to_string(bytes) +
+                      " bytes its sizes need" + (status < 0 && status != Z_BUF_ERROR ? " (they do not decode)" : ""));
+}
+
 }  // namespace
 
 void check_nrrd_header(const std::string& path, uint64_t memory_budget) {
@@ -144,6 +182,7 @@ void check_nrrd_header(const std::string& path, uint64_t memory_budget) {
     throw FormatError(path + ": NRRD data of " + field("sizes") + " samples would take " +
                       std::to_string((bytes + count * 4) >> 20) + " MiB in memory, beyond the budget of " +
                       std::to_string(memory_budget >> 20) + " MiB");
+  if (encoding == "gzip" || encoding == "gz") check_gzip_data(path, data, start, bytes);
 }
 
 }  // namespace isoform::vdbio

@@ -4,8 +4,10 @@
 // samples cannot come from the data present (raw bytes short of the size,
 // gzip data that cannot expand that far: deflate's ratio is at most 1032
 // to 1, text with fewer numbers than samples), whose array would pass the
-// memory budget, or whose data lie in several files; and a first line that
-// is not NRRD0001 to NRRD0005 (Teem leaks a little when it refuses one).
+// memory budget, or whose data lie in several files; gzip data that end
+// early or do not decode (Teem's gzip reader leaks its stream on them); and
+// a first line that is not NRRD0001 to NRRD0005 (Teem leaks a little when
+// it refuses one).
 #pragma once
 
 #include <cstdint>

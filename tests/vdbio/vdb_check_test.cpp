@@ -271,10 +271,15 @@ TEST(VdbCheck, AThousandFailedOpensHoldNoMoreMemoryThanOne) {
   write_bytes(dir.file("corrupt.vdb"), corrupt);
   write_bytes(dir.file("negative.vdb"), negative);
   write_bytes(dir.file("garbled.nrrd"), "NRRD0004\ntype: nonsense\ndimension: 3\n\n");
+  // Gzip data that end early: Teem's reader would leak its stream.
+  std::string gzip = "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 4 4\nencoding: gzip\n\n";
+  gzip += std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03\x63\x60", 12);
+  write_bytes(dir.file("short.nrrd"), gzip);
   const std::vector<std::function<void()>> opens = {
       [&] { open_and_read_all(dir.file("corrupt.vdb")); },
       [&] { open_and_read_all(dir.file("negative.vdb")); },
       [&] { read_nrrd(dir.file("garbled.nrrd")); },
+      [&] { read_nrrd(dir.file("short.nrrd")); },
   };
   for (size_t k = 0; k < opens.size(); ++k) {
     SCOPED_TRACE(k);
