@@ -49,4 +49,18 @@ void exercise_mesh(isoform_mesh* mesh) {
   isoform_patch_free(patch);
 }
 
+void fuzz_volume_file(const uint8_t* data, size_t size, const char* extension) {
+  isoform_volume* volume = nullptr;
+  if (isoform_volume_open(as_file(data, size, extension).c_str(), &volume) != ISOFORM_OK) return;
+  exercise_volume(volume);
+  isoform_volume_free(volume);
+}
+
+void fuzz_mesh_file(const uint8_t* data, size_t size, const char* extension) {
+  isoform_mesh* mesh = nullptr;
+  if (isoform_mesh_load(as_file(data, size, extension).c_str(), &mesh) != ISOFORM_OK) return;
+  exercise_mesh(mesh);
+  isoform_mesh_free(mesh);
+}
+
 }  // namespace isoform::fuzz

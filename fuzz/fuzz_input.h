@@ -25,4 +25,10 @@ void exercise_volume(isoform_volume* volume);
 // mesh of at most 4,096 triangles, each on what the step before left.
 void exercise_mesh(isoform_mesh* mesh);
 
+// One fuzz input as a volume file (isoform_volume_open) or a mesh file
+// (isoform_mesh_load) of the given extension, exercised as above when the
+// reader accepts it.
+void fuzz_volume_file(const uint8_t* data, size_t size, const char* extension);
+void fuzz_mesh_file(const uint8_t* data, size_t size, const char* extension);
+
 }  // namespace isoform::fuzz

@@ -3,9 +3,6 @@
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  isoform_volume* volume = nullptr;
-  if (isoform_volume_open(isoform::fuzz::as_file(data, size, ".nrrd").c_str(), &volume) != ISOFORM_OK) return 0;
-  isoform::fuzz::exercise_volume(volume);
-  isoform_volume_free(volume);
+  isoform::fuzz::fuzz_volume_file(data, size, ".nrrd");
   return 0;
 }

@@ -3,9 +3,6 @@
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  isoform_mesh* mesh = nullptr;
-  if (isoform_mesh_load(isoform::fuzz::as_file(data, size, ".obj").c_str(), &mesh) != ISOFORM_OK) return 0;
-  isoform::fuzz::exercise_mesh(mesh);
-  isoform_mesh_free(mesh);
+  isoform::fuzz::fuzz_mesh_file(data, size, ".obj");
   return 0;
 }
