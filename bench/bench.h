@@ -23,7 +23,8 @@ namespace isoform_bench {
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-// The performance target is stated for two worker threads.
+// The bench's targets are stated for two worker threads (bench/README.md:
+// throughput at 2 threads).
 constexpr int kThreads = 2;
 
 inline double ms_between(Clock::time_point from, Clock::time_point to) {
@@ -103,10 +104,10 @@ RawLayout headsq_layout(const std::string& data_dir);
 RawLayout resampled_layout(const std::string& work_dir);
 std::string resampled_vdb_path(const std::string& work_dir);
 
-// NOTE: the defaults take the best of 30 calls per method and input (about
-// 6 minutes in all on the bench machine): single calls there move by 10-40 %
-// with the host's phases, and the best of 3 calls x 1-2 rounds moved the
-// ratios by 0.1-0.3 between runs (bench/README.md).
+// NOTE: the defaults take the best of 30 calls per method and input (reps
+// times rounds): on a shared machine a single call's time moves with the
+// host's load, and the best of fewer calls left the ratios between the
+// methods differing from one run to the next.
 struct RunOptions {
   PrepareOptions prepare;
   std::string json_path;

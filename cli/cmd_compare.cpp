@@ -1,7 +1,7 @@
 // `isoform compare MESH [--reference in.vdb --iso V | --reference sphere|torus] -o study/`:
 // the flat triangles, the Loop limit surface and the side-vertex surface
 // (Chapter 6) of the same triangulation,
-// measured at the same samples (issue 5), written as report.json,
+// measured at the same samples, written as report.json,
 // samples.csv, report.md, one PLY tessellation per surface, and pictures:
 // matplotlib plots and Blender renders with isophote stripes.
 #include <iostream>

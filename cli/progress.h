@@ -1,6 +1,7 @@
 // Long library calls on a worker thread, with a progress bar on stderr drawn
-// by the main thread from the isoform_progress sink (ARCHITECTURE.md: the
-// library only stores into the sink; callers poll it).
+// by the main thread from the isoform_progress sink (the library only
+// stores into the sink and never calls back from its workers; callers poll
+// it).
 #pragma once
 
 #include <functional>

@@ -8,8 +8,9 @@
 #   default: 600 seconds, every target (vdb nrrd raw ply obj stl);
 #   FUZZ_JOBS=N runs N jobs at once (default: one per core)
 #
-# Limits per input, as the issue of hostile files states them: 10 s, 1 GiB
-# of memory and no single allocation over 1 GiB; leaks are findings too.
+# Limits per input, as docs/hostile-files.md states them for hostile files:
+# 10 s, 1 GiB of memory and no single allocation over 1 GiB; leaks are
+# findings too.
 # A crashing, leaking or slow input is kept in build-fuzz/findings/<target>/
 # and the script exits non-zero. The last line of each run gives its
 # executions and coverage; build-fuzz/fuzz-summary.txt collects them.

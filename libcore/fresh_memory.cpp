@@ -46,8 +46,8 @@ void populate_pages(void* p, size_t bytes, bool parallel, bool huge) {
   if (end <= begin) return;
   if (huge) advise_huge(reinterpret_cast<void*>(begin), end - begin);
   // NOTE: in parallel, at least 4 stretches, so that the pages of a
-  // contour's small output arrays (headsq: 0.3-1 MB each, 1.5 ms of faults
-  // in all, a tenth of the call) fault in on every thread, not on one.
+  // contour's small output arrays (headsq: 0.3-1 MB each, their faults a
+  // visible share of such a short call) fault in on every thread, not on one.
   size_t stretch = kStretch;
   if (parallel) stretch = std::min(kStretch, std::max(page, ((end - begin) / 4 + page - 1) & ~(page - 1)));
   const size_t stretches = (end - begin + stretch - 1) / stretch;

@@ -1,11 +1,11 @@
 // Large arrays that the contour and the curvature write in full: their
 // pages are made present a stretch at a time (Linux madvise
 // MADV_POPULATE_WRITE) before they are written, instead of by one page fault
-// per 4 KB page on first write, which costs about a third more kernel time
-// for the same zeroed pages. Where asked, the whole 2 MB pages inside the
-// range are asked for first (MADV_HUGEPAGE: one fault and one zeroing per
-// 2 MB). Elsewhere, or when the kernel refuses, the pages fault in as usual:
-// the contents and the result never depend on it.
+// per 4 KB page on first write, which adds a fault's entry and exit to the
+// kernel's time for every page it zeroes. Where asked, the whole 2 MB pages
+// inside the range are asked for first (MADV_HUGEPAGE: one fault and one
+// zeroing per 2 MB). Elsewhere, or when the kernel refuses, the pages fault
+// in as usual: the contents and the result never depend on it.
 #pragma once
 
 #include <cstddef>
@@ -34,8 +34,8 @@ void populate_pages(void* p, size_t bytes, bool parallel = true, bool huge = fal
 // same size takes one of them: its pages are then present already. A
 // contour of a small volume maps a few such blocks per call, and making
 // their pages present again costs more than the contour's own work on them
-// where a first touch is slow (2 to 3 us per 4 KB page on the machine
-// bench/README.md describes). Thread-safe.
+// where a first touch is slow (each 4 KB page a fault and a zeroing of its
+// own, against a few instructions of the contour's per value). Thread-safe.
 class SystemBlock {
  public:
   static constexpr size_t kCachedBlock = size_t(4) << 20;

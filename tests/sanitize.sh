@@ -12,8 +12,8 @@
 # allocations that live until exit are not reported (lsan.supp). The
 # headless Blender tests are left out: Blender cannot run with a preloaded
 # ASan runtime. CI does not run this script (the sanitised build and suite
-# take most of an hour on two cores); run it after changing a reader or the
-# C API.
+# take many times as long as the normal ones); run it after changing a
+# reader or the C API.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"

@@ -19,8 +19,9 @@ constexpr int kBlock = int(Leaf::DIM);  // 8: candidates are found per block of 
 // Cells per brick and axis: 2 blocks. NOTE: against bricks of one block,
 // a brick's halo and its shared crossings and gradients on brick faces are
 // a smaller part of its work, and per-brick costs are spread over 8 times
-// the cells; on the bench's narrow-band sphere 4 blocks were slower
-// (bench/README.md).
+// the cells. Bricks of 4 blocks measured slower on a narrow-band level set,
+// where a brick of 64 blocks around a thin band holds many blocks with no
+// crossing that are filled and scanned all the same.
 constexpr int kCells = 16;
 constexpr int kSpan = kCells / kBlock;  // blocks per brick and axis
 static_assert(kCells % kBlock == 0 && (kCells & (kCells - 1)) == 0, "bricks are whole, aligned blocks");

@@ -90,8 +90,9 @@ void run_cgal(const Case& c, const Options& o, int degree, const std::vector<flo
   isoform::VertexRings* rings = nullptr;
   const Timing table = best_of(1, [&] { rings = new isoform::VertexRings(ring_table(c)); });
   std::unique_ptr<isoform::VertexRings> owned(rings);
-  // CGAL takes minutes per million vertices: the one-thread time is taken
-  // on every cgal_stride-th vertex and scaled to the whole mesh.
+  // CGAL's fit is far slower than the others', too slow to time on every
+  // vertex of a large mesh: the one-thread time is taken on every
+  // cgal_stride-th vertex and scaled to the whole mesh.
   const size_t stride = size_t(o.cgal_stride);
   r.one = best_of(o.peer_reps, [&] { one = fit_all(c, *rings, degree, o.cgal_rings, normals, 1, stride); });
   r.one.wall = r.one.wall * double(stride) + table.wall;

@@ -42,7 +42,7 @@ double seconds_since(Clock::time_point start);
 // CPU time of the whole process (all its threads) in seconds.
 double process_cpu_seconds();
 
-// Wall and CPU seconds of a call. On this shared machine the wall time also
+// Wall and CPU seconds of a call. On a shared machine the wall time also
 // counts the time other processes had the cores; the CPU time does not.
 struct Timing {
   double wall = 0, cpu = 0;

@@ -27,9 +27,10 @@ std::string utc_now() {
   return buf;
 }
 
-// The targets, judged on every mesh: the default at 1M vertices per
-// second per core (one thread) and more accurate than every peer in H, K,
-// k1 and k2; the seed's method at 5M with normals given.
+// The targets (bench/curvature/README.md), judged on every mesh: the
+// default at 1M vertices per second per core (one thread) and more accurate
+// than every peer in H, K, k1 and k2; the seed's method at 5M with normals
+// given.
 icb::Json verdicts(const icb::Json& cases) {
   double default_rate = 1e300, seed_rate = 1e300;
   bool beats_peers = true;

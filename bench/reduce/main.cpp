@@ -1,5 +1,5 @@
 // isoform_reduce_bench: command line, the run over inputs, targets and
-// methods, the two targets judged, the Markdown and JSON reports
+// methods, the two targets judged, the Markdown and JSON reports
 // (bench/run-reduce.sh calls it).
 #include <algorithm>
 #include <cmath>
@@ -57,9 +57,9 @@ const irb::Row* find(const std::vector<irb::Row>& rows, double percent, const st
   return nullptr;
 }
 
-// The targets: on the smooth graph at 90% removed, isoform's maximum
-// and RMS error at most OpenMesh's; on every input and target, isoform's
-// wall time at most 3 times meshoptimizer's.
+// The targets (bench/README.md, "Reduction"): on the smooth graph at 90%
+// removed, isoform's maximum and RMS error at most OpenMesh's; on every
+// input and target, isoform's wall time at most 3 times meshoptimizer's.
 std::string verdicts(const std::vector<irb::Input>& inputs, const std::vector<std::vector<irb::Row>>& all,
                      irb::Json& out) {
   std::string text = "| input | removed | isoform max / OpenMesh max | isoform RMS / OpenMesh RMS | error target met |"

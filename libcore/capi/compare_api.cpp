@@ -1,5 +1,6 @@
-// The C API's comparison calls (issue 5): the Loop baseline and the flat
-// triangles measured over the same mesh, the report and its files.
+// The C API's comparison calls: the side-vertex surface against the Loop
+// limit surface and the flat triangles, measured over the same mesh, the
+// report and its files.
 #include <cstring>
 
 #include "../compare/compare.h"

@@ -1,6 +1,6 @@
 // The Loop limit surface of a triangle mesh (Loop 1987), evaluated with
 // OpenSubdiv as the baseline of the comparison study. This module is the only
-// place isoform uses OpenSubdiv (ARCHITECTURE.md).
+// place isoform uses OpenSubdiv: it is a baseline, not part of the pipeline.
 //
 // The mesh is refined adaptively around its irregular vertices (valence other
 // than 6, boundaries) up to `isolation` levels; regular regions become quartic

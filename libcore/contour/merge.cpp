@@ -24,8 +24,8 @@ namespace {
 
 // Arrays that are written in full before they are read: no zeroing, pages
 // made present up front, in 2 MB pages where the system allows
-// (fresh_memory.h; a first touch of a 4 KB page costs 2-3 us on the bench
-// machine, bench/README.md).
+// (fresh_memory.h: a first touch of a 4 KB page is a fault and a zeroing
+// of its own, which costs more than the merge's writes to that page).
 template <class T>
 std::unique_ptr<T[]> uninitialised(size_t n) {
   return fresh_array<T>(n, true, true);

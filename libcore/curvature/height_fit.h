@@ -37,9 +37,8 @@ HeightFit fit_height(FitModel model, const double* u, const double* v, const dou
 // fit_height on four point sets at once, side by side: point j of set l at
 // u[4 j + l], v[4 j + l], d[4 j + l], count[l] points in set l (0 for an
 // unused lane), every set padded with zeros up to the longest. out[l] is
-// what fit_height gives for set l alone, bit for bit, about twice as fast
-// for the larger models (the sums and factorisations run in the lanes of a
-// vector).
+// what fit_height gives for set l alone, bit for bit, and faster for the
+// larger models (the sums and factorisations run in the lanes of a vector).
 void fit_height_lanes(FitModel model, const double* u, const double* v, const double* d, const int (&count)[4],
                       HeightFit (&out)[4], double min_rcond = 1e-10);
 
@@ -52,7 +51,8 @@ struct LaneGroup {
 // fit_height_lanes on two groups of four sets, every set padded with zeros
 // up to the longest of all eight: out[g][l] is what fit_height gives for set
 // l of group g alone, bit for bit. With AVX-512 the eight sets run in the
-// lanes of one vector (about twice as fast as two groups one after another).
+// lanes of one vector (one pass of the arithmetic where two groups one
+// after another take two).
 void fit_height_lanes(FitModel model, const LaneGroup (&groups)[2], HeightFit (&out)[2][4],
                       double min_rcond = 1e-10);
 

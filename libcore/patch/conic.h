@@ -4,10 +4,11 @@
 // inflection (non-convex data, Definition 6.3). Written as a template over the
 // scalar (double or a Jet, jet.h) so the patch gets exact derivatives.
 //
-// Readings taken (shared/reference/READING-NOTES.md, Chapter 6):
+// Readings of Chapter 6 taken here:
 // - The cubic's interior weights are (1 + 2 omega) / 3, the degree elevation
 //   of the quadratic conic with weight omega that (6.8) and Theorem 6.3 speak
-//   of; (6.5) printed omega itself, which gives no circles.
+//   of; (6.5) printed omega itself, which read literally gives no circles
+//   and a straight segment for parallel tangents.
 // - omega = sin(gamma / 2) (Theorem 6.3) and L01 from (6.9) are combined
 //   into L01 = L sin(beta) / ((1 + 2 omega) cos(gamma / 2)), the same number
 //   with the 0/0 of (6.12) cancelled, so parallel tangents need no branch.

@@ -3,12 +3,16 @@
 // edge, from the lower to the higher vertex index, so both triangles that
 // share the edge use the same curve and the same normals.
 //
-// Reading of (6.14)-(6.16) (READING-NOTES.md): the normal n_S(t) is
-// perpendicular to the curve's tangent T(t) (6.13) and is the conic's
-// in-plane normal n_C(t) = p x T(t) turned about T(t) by a signed angle
-// theta(t) that varies linearly from its value at t = 0 (where n_S = n0) to
-// its value at t = 1 (n_S = n3). The printed reading, a linear cosine, makes
-// theta jump sign where the out-of-plane part of the normal changes sign.
+// Reading of (6.14)-(6.16): the normal n_S(t) is perpendicular to the
+// curve's tangent T(t) (6.13) and is the conic's in-plane normal
+// n_C(t) = p x T(t) turned about T(t) by a signed angle theta(t) that varies
+// linearly from its value at t = 0 (where n_S = n0) to its value at t = 1
+// (n_S = n3). The printed reading, a linear cosine gamma(t) (6.16), cannot
+// be followed continuously: the conic's plane contains (n0 + n3) / 2, so n0
+// and n3 make equal and opposite angles with the plane's normal, gamma(0) =
+// gamma(1), the cosine is constant, and a normal that keeps it must jump
+// (theta changes sign) where its out-of-plane part changes sign, which
+// cracks the surface.
 #pragma once
 
 #include "conic.h"

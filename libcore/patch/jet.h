@@ -8,8 +8,8 @@
 #include <cmath>
 
 // NOTE: the jets' arithmetic is small and called millions of times per
-// tessellation; GCC leaves it out of line at -O3, which costs about half the
-// evaluation time, so it is forced inline.
+// tessellation; GCC leaves it out of line at -O3, where each call costs
+// more than the few operations it wraps, so it is forced inline.
 #define ISOFORM_JET_INLINE __attribute__((always_inline)) inline
 
 namespace isoform::patch {

@@ -62,7 +62,8 @@ ISOFORM_JET_INLINE void lane_sincos(L x, L& sin_x, L& cos_x) {
 template <bool S>
 struct J1 {
   // NOTE: no zeroing by default (V3's members are value-initialised, and
-  // zeroed temporaries cost a third of the batch time).
+  // the batch's many temporaries are all written before they are read:
+  // zeroing them first is work for nothing in the inner loops).
   L v, d, h;
   J1() {}
   J1(L a, L b, L c) : v(a), d(b), h(c) {}

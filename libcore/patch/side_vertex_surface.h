@@ -22,7 +22,10 @@ namespace isoform::patch {
 
 // The blend (6.1): w_i proportional to u_j u_k as printed in (6.2)-(6.3), or
 // to (u_j u_k)^2, which also has Theorem 6.1 (iii) (zero derivative of w_i
-// across edge e_i; READING-NOTES.md: the printed weights do not).
+// across edge e_i). The printed weights do not: their derivative across e_i
+// does not vanish. Theorem 6.2's proof does not need (iii), so both give
+// tangent-plane continuity, but with the printed ones the surface can turn
+// sharply in a thin layer along the edges.
 enum class Blend { Printed = 0, Squared = 1 };
 
 // A user weight for the conic of one mesh edge (either vertex order).
@@ -32,7 +35,7 @@ struct EdgeTension {
 };
 
 struct PatchOptions {
-  // NOTE: the default is the one measured better (docs/patch.md).
+  // NOTE: the default is the one measured better (docs/patch.md, "Which blend").
   Blend blend = Blend::Squared;
   // omega of every conic: 0 (default) = automatic, sin(gamma/2) (Theorem 6.3);
   // W > 0: omega = W a / sqrt(W^2 + a^2) with a = sin(gamma/2), i.e. about
@@ -44,7 +47,8 @@ struct PatchOptions {
   // edges, so they still meet the boundary curves (Definition 6.2 (iv)).
   std::vector<EdgeTension> edge_tension;
   // Fill SurfaceSample's second derivatives (exact, forward-mode jets); off
-  // saves about a third of the evaluation time.
+  // saves the second-order terms of every jet, a large part of the
+  // evaluation's work.
   bool second_derivatives = true;
 };
 

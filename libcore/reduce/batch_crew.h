@@ -3,22 +3,21 @@
 // max_concurrency - 1 helpers, which wait between stretches by spinning on
 // one atomic word instead of going back to the task scheduler.
 //
-// NOTE: a batch of the passes computes about 18 removals side by side, then
-// decides them one at a time, then commits about as many side by side
-// (the bench's contour: 13,000 batches a call, some 70, 5 and 12
-// microseconds each on two cores). With tbb::parallel_for, each stretch
-// waited for its last item on the other thread, and starting and ending it
-// cost a few microseconds; the computing ran 1.77 times as fast on two
-// threads as on one. Here a stretch is posted with one atomic store, its
-// items are taken one at a time from a shared counter by whichever thread
-// comes first, and the caller may leave once nothing is left to take,
-// while the helpers finish what they took: the decisions start on the
-// removals already computed. Which thread computes an item never changes
-// what it computes. An open stretch (open, add, drain) hands its items out
-// as they become known: the helpers commit a batch's accepted removals
-// while the calling thread decides the next entries, instead of waiting
-// for the decisions to end (on the bench's contour the decisions took a
-// tenth of the passes' wall time, the helpers idle throughout).
+// NOTE: a batch of the passes computes its removals side by side, then
+// decides them one at a time, then commits the accepted ones side by side:
+// a large reduction runs thousands of stretches, each microseconds long.
+// With tbb::parallel_for, each stretch waited for its last item on the
+// other thread, and starting and ending it cost about as much as a short
+// stretch's whole work. Here a stretch is posted with one atomic store,
+// its items are taken one at a time from a shared counter by whichever
+// thread comes first, and the caller may leave once nothing is left to
+// take, while the helpers finish what they took: the decisions start on
+// the removals already computed. Which thread computes an item never
+// changes what it computes. An open stretch (open, add, drain) hands its
+// items out as they become known: the helpers commit a batch's accepted
+// removals while the calling thread decides the next entries, instead of
+// waiting for the decisions to end (the decisions are serial, and the
+// helpers would otherwise idle throughout them).
 #pragma once
 
 #include <algorithm>

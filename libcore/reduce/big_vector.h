@@ -17,10 +17,11 @@
 // writing them anywhere), and the next array that fits takes it, cut to
 // its size: a second reduction in the same process (the Blender add-on, a
 // bench's repeated calls) finds its pages present instead of asking the
-// kernel to clear about 150 MB again for a 1M-triangle mesh, which took
-// 0.06-0.24 s of one call on the machine bench/README.md describes. At
-// most kBigKeptBytes are kept, the oldest given back first. The contents
-// of a kept page are left over or zero: the vectors write before they read.
+// kernel to clear about 150 MB again for a 1M-triangle mesh: the kernel
+// zeroes every fresh page at its first write, one fault a page, and for
+// such arrays that is a large share of a whole call. At most kBigKeptBytes
+// are kept, the oldest given back first. The contents of a kept page are
+// left over or zero: the vectors write before they read.
 #pragma once
 
 #include <cstddef>

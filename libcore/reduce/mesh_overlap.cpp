@@ -141,10 +141,11 @@ inline CellRange cell_range(const Box& b, const Grid& g) {
 // bucket. The grid is cut into slabs one block thick across its longest
 // axis, each tested on its own (side by side): only the entries of the
 // slabs under test exist (a megabyte or two each, in cache, instead of
-// 86 MB written once and read once for the bench's 1M-triangle contour:
-// on this kind of host the first write of fresh memory was most of the
-// check's time). Within a slab the blocks are numbered along the other two
-// axes when they are few enough, else by a hash of the block.
+// 86 MB written once and read once for a 1M-triangle contour: the first
+// write of fresh memory, a page fault and a zeroing per page, costs more
+// than the check's own work on those bytes). Within a slab the blocks are
+// numbered along the other two axes when they are few enough, else by a
+// hash of the block.
 constexpr int kBlockBits = 2;
 
 // The slab axis and the two others, and the grid's extent in blocks.
@@ -222,9 +223,9 @@ struct Slabs {
 };
 
 // NOTE: the grid's extent and the slabs' lists in a few stretches of
-// triangles side by side (stretch_sort.h; a serial walk of 1M triangles'
-// ranges was a fifth of the check's time alone), each slab's triangles
-// ascending.
+// triangles side by side (stretch_sort.h; a serial walk over every
+// triangle's range would leave the other threads idle through a sizeable
+// part of the check), each slab's triangles ascending.
 Slabs slabs_of(const BigVector<Box>& boxes, const Grid& g) {
   Slabs s;
   SlabAxes& a = s.axes;
@@ -339,7 +340,8 @@ PairOverlap test_pair(const LocalTriangle& ta, const LocalTriangle& tb) {
 
 // NOTE: a triangle much larger than the cells (a ground quad under a
 // detailed model) would fill millions of cells: a tilted 60 x 60 quad beside
-// a 20,000-triangle sphere of radius 1 took 5.9 GB and 17 s. A triangle whose
+// a 20,000-triangle sphere of radius 1 covers so many cells of the sphere's
+// size that their entries alone run to gigabytes. A triangle whose
 // box covers more cells than the triangles number over 32 (and over 512) is
 // left out of the grid and tested against every triangle's box instead: n
 // box tests rather than more than n / 32 entries, each written, sorted and

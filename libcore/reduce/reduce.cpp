@@ -1,7 +1,10 @@
 // Algorithm 5.1 of Hamann (1991): triangle reduction by iterative triangle
-// removal, in passes (Remark 5.9, READING-NOTES): a pass takes the
-// triangles that exist when it starts ("old") in increasing weight and tries
-// each once; triangles made during the pass ("new") wait for the next pass.
+// removal, in passes: Remark 5.9's "new" triangles, which may go only when
+// no "old" one can, read as passes (a reduction that ignores the remark
+// ends with an error an order of magnitude larger). A pass takes the
+// triangles that exist when it starts ("old") in increasing weight and
+// tries each once; triangles made during the pass ("new") wait for the
+// next pass.
 // The queue is lazy (queue.h): a pass orders (weight, id, stamp) once, and an
 // entry whose face has changed since (stamp) or was made in this pass is skipped.
 //
@@ -55,14 +58,14 @@ void check_options(const ReduceOptions& o) {
 
 // The self-overlap check (validate.h) as a task beside the whole reduction,
 // which works on a copy until it succeeds.
-// NOTE: the check only reads the input and takes about a tenth of a
+// NOTE: the check only reads the input and is a small part of a
 // reduction's CPU time; the reduction has serial stretches (the manifold
 // checks' edge table, the working mesh's face lists, the queue, each batch's
 // decisions) in which the other core would idle. The reduction runs
 // isolated (tbb::this_task_arena::isolate), so a thread waiting for its own
 // parallel work never picks up a piece of the check (a batch would wait for
-// it); an idle thread does. Measured on the bench's 1M-triangle contour, two
-// cores: 6 % less wall time than the check beside the preparation only.
+// it); an idle thread does. Beside the whole reduction rather than beside
+// the preparation only, the check fills more of those idle stretches.
 // A bad input is still refused by name: failed() stops the passes, and the
 // check's error is thrown when the reduction is done or fails.
 class OverlapCheck {
@@ -119,9 +122,10 @@ WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const st
   }
   *computed = mesh.curvature.k1.size() != mesh.vertex_count();
   // NOTE: the weights need |k1| + |k2| at every vertex (5.22), and the
-  // result carries the curvature: the cubic fit over the two-ring, half the
-  // time of `isoform curvature`'s quartic default over the three-ring, with
-  // the bench's graph errors the same and Table 5.1 as good (docs/reduce.md).
+  // result carries the curvature: the cubic fit over the two-ring, cheaper
+  // than `isoform curvature`'s quartic default over the three-ring, with the
+  // reduction's errors no worse (docs/reduce.md, "Decisions the dissertation
+  // leaves open" and the Table 5.1 block).
   VertexCurvature fitted;
   if (*computed) {
     CurvatureOptions fit;

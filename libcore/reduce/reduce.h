@@ -53,7 +53,8 @@ struct ReduceOptions {
   // Beyond the seed: refuse a removal whose new triangles would cross a
   // triangle of the mesh outside its platelet (face_grid.h), so the result
   // does not overlap itself where two sheets of the input lie close. Off by
-  // default: it costs about twice the time (docs/reduce.md).
+  // default: its queries cost time on every removal (docs/reduce.md,
+  // "Beyond the seed").
   bool prevent_overlap = false;
 };
 

@@ -51,10 +51,12 @@ Remover::Remover(WorkMesh& w, const ReduceOptions& options)
   if (options.prevent_overlap) grid_ = std::make_unique<FaceGrid>(w);
 }
 
-// Theorem 5.3 with the point that will be inserted (READING-NOTES: for an
-// open corona it is not the centroid): p's projection onto P lies strictly
-// left of every directed edge of the platelet boundary polygon (5.17), and
-// the polygon goes around it once (half_plane.h).
+// Theorem 5.3 with the point that will be inserted, not the centroid the
+// theorem tests: for an open corona the origin of Section 5.2 (Figure 5.4)
+// is a vertex or an edge's mid-point, and the refined and fallback points
+// lie elsewhere again. The test: p's projection onto P lies strictly left
+// of every directed edge of the platelet boundary polygon (5.17), and the
+// polygon goes around it once (half_plane.h).
 bool Remover::half_plane_ok(const Platelet& p, const Frame& frame, const Eigen::Vector3d& point) const {
   return half_plane_once(frame.uv(point), int(p.ring.size()), p.link_edges(),
                          [&](int j) { return frame.uv(w_.pos[size_t(p.ring[size_t(j)])]); });

@@ -130,8 +130,10 @@ Replacement quadratic_point(const std::vector<Eigen::Vector3d>& pts, const Frame
   r.fit_terms = q.terms;
   const double u = uv(0), v = uv(1);
   r.point = f.c + h * (u * f.b1 + v * f.b2 + q.value(u, v) * f.n);
-  // Theorem 5.5 (with READING-NOTES' 1 + c01^2) is the curvature of the graph
-  // of the quadratic; principal_curvatures evaluates it from the derivatives.
+  // Theorem 5.5 is the curvature of the graph of the quadratic, with the
+  // first fundamental form's lower right entry 1 + c01^2 (its proof prints
+  // 1 + c01; the derivation and (5.35) itself give the square);
+  // principal_curvatures evaluates it from the derivatives.
   HeightFit hf;
   hf.ok = true;
   hf.fu = 2 * q.c20 * u + q.c11 * v + q.c10;

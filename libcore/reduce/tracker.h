@@ -97,9 +97,10 @@ class Tracker {
   // out follows the kept one nearest to it, for measure_result.
   // NOTE: the refined point is one least-squares step along one direction;
   // a few vertices under each of the platelet's faces determine it as well
-  // as all of them, but late in a reduction to 1 % each face holds about 50
-  // and walking them was about 40 % of the removals' time. The bench's
-  // contour keeps the same error (docs/reduce.md).
+  // as all of them, but late in a reduction to 1 % each face holds about 50,
+  // and walking them all would be a large part of every removal's work.
+  // A contour reduced with the sample keeps the error it had without it
+  // (docs/reduce.md, "Beyond the seed").
   void relink(const Platelet& p, const TrackerPending& t, const int* ids);
   static constexpr int kSample = 4;
   // The original vertices listed under face f now.

@@ -62,7 +62,7 @@ WorkMesh build_work_mesh(const Mesh& mesh, const VertexCurvature& c, const Verte
   fill_face_lists(w, stars);
   w.vertex_alive.assign(nv, 1);
   // NOTE: the manifold check's walk around each vertex tells this already;
-  // finding it again here was half the time of building the structure.
+  // finding it again here would repeat that walk over every vertex's star.
   if (on_boundary.size() == nv) {
     w.boundary.assign(on_boundary.begin(), on_boundary.end());
   } else {

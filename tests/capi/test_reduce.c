@@ -157,7 +157,7 @@ static isoform_mesh* paraboloid_grid(int n) {
   return m;
 }
 
-/* Bad input and the edge cases of the list, through the C API. */
+/* Bad input and the edge cases of the reduction, through the C API. */
 static void case_input(void) {
   /* Two triangles that cross: the edge (3, 4) of the second pierces the first at (.5, .5, 0). */
   const float crossing[18] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0.5f, 0.5f, -1, 0.5f, 0.5f, 1, 0.6f, 0.6f, 0.5f};

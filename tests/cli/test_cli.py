@@ -157,7 +157,7 @@ def unpack_at(blob, offset, fmt):
 
 
 def read_ply(path):
-    """Checks the header the issue promises and returns (points, normals, faces, parts)."""
+    """Checks the header the README promises and returns (points, normals, faces, parts)."""
     with open(path, "rb") as f:
         blob = f.read()
     order, elements, offset = parse_ply_header(blob)

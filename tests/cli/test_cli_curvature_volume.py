@@ -20,7 +20,7 @@ BINARY = None
 DATA = None
 MAKE_VECTOR_VDB = None
 RUN_TIMEOUT_SECONDS = 600
-SMOKE_ACTIVE = 1049275  # shared/data/README.md
+SMOKE_ACTIVE = 1049275  # smoke.vdb's active voxels, as OpenVDB counts them
 SPHERE_ACTIVE = 270638
 RESULT_GRIDS = ["mean", "gauss", "k1", "k2", "k3"]
 

@@ -144,8 +144,9 @@ TEST(CellPolygons, DegenerateSaddleTakesTheAdHocRule) {
 
 TEST(CellPolygons, PolygonSizesAndExtraPoints) {
   // Over random cells of the checkerboard and the other many-crossing cases,
-  // polygons of 3..9 and 12 points occur, never 10 or 11 (READING-NOTES), and
-  // every polygon of 7 or more points has two segments on one face.
+  // polygons of 3..9 and 12 points occur, never 10 or 11 (no sign pattern
+  // of the eight corners makes one), and every polygon of 7 or more points
+  // has two segments on one face.
   std::mt19937 rng(7);
   std::set<int> sizes;
   for (int signs = 0; signs < 256; ++signs)

@@ -26,8 +26,9 @@ struct Graph {
   double seed_rms[4];  // the seed's Table 4.1 row: k1, k2, H, K
 };
 
-// The nine functions of Table 4.1 (function 7 with the .15 of the figure
-// captions, as READING-NOTES.md explains).
+// The nine functions of Table 4.1 (function 7 with .15: the table prints
+// 15(x^3 + 2x^2y - xy + 2y^2), but the captions of Figures 4.5, 4.6 and 5.8
+// print .15(...); the decimal point was lost in the table).
 const std::vector<Graph>& table41_graphs();
 
 // Exact principal curvatures of z = f(x, y) with the upward normal.

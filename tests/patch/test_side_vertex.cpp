@@ -66,7 +66,9 @@ TEST(SideVertex, Figure67TetrahedronTouchesTheSphereAlongTheEdges) {
     const Distance d = sphere_distance(*s, 60);
     std::printf("Figure 6.7, %s blend, automatic weights: max distance %.6f, RMS %.6f, at the face centre %.6f\n",
                 b == Blend::Printed ? "printed" : "squared", d.max, d.rms, d.centre);
-    // Inside the sphere, farthest at the face centres (READING-NOTES.md).
+    // Inside the sphere, farthest at the face centres, as the construction
+    // read faithfully gives (the text beside Figure 6.7 says only "maximal
+    // distance ... about 0.01"; the construction is not tuned to that).
     EXPECT_LT(d.max_outside, 1e-12);
     EXPECT_NEAR(d.centre, d.max, 1e-12);
     EXPECT_GT(d.max, 1e-4);

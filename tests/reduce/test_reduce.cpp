@@ -83,8 +83,9 @@ TEST(Reduce, TorusOfFigure510KeepsGenusOneAndIsClosed) {
     EXPECT_TRUE(s.curvature_computed);
     EXPECT_EQ(m.curvature.k1.size(), m.vertex_count());
     // The reduced surface stays near the torus: sampled over its triangles
-    // (measured 2026-12-01: RMS 0.0353 and max 0.203 for the quadratic point;
-    // the input's long triangles, 0.63 x 0.1, make 10 % coarse).
+    // (measured when the bounds were set: RMS 0.0353 and max 0.203 for the
+    // quadratic point; the input's long triangles, 0.63 x 0.1, make 10 %
+    // coarse).
     double sum = 0, worst = 0;
     long samples = 0;
     for (size_t t = 0; t < m.triangle_count(); ++t)
@@ -271,7 +272,7 @@ TEST(Reduce, NewPointsCarryTheCurvatureOfTheFit) {
   // points' values come from Theorem 5.5 on their platelet's quadratic
   // (measured: median relative error 0.062, 90th percentile 0.22); the
   // survivors keep the curvature computed at entry, the cubic fit over the
-  // two-ring (measured 2026-12-04: median 0.020).
+  // two-ring (measured: median 0.020).
   Mesh m = figure510_torus(80, 40);
   const std::vector<double> before = m.precise_points;
   reduce(m, 0.3);
@@ -493,7 +494,7 @@ TEST(Reduce, OneThreadAndAllThreadsGiveTheSameBits) {
     EXPECT_EQ(s1.max_distance, s2.max_distance);
     EXPECT_EQ(s1.graph_rms, s2.graph_rms);
     if (!c.options.graph) expect_closed_manifold(all);
-    // Four threads on this machine's cores: helpers that compute and commit
+    // Four threads, whatever the cores: helpers that compute and commit
     // while others still run theirs.
     Mesh four = c.mesh;
     ReduceStats s4;

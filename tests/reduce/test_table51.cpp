@@ -9,8 +9,8 @@
 namespace isoform {
 namespace {
 
-// docs/reduce.md's first table (isoform's default options), 2026-12-04 (the
-// curvature computed at entry by the cubic fit; the quartic gave 2026-12-01's).
+// The Table 5.1 block of docs/reduce.md (isoform's default options: the
+// curvature computed at entry by the cubic fit over the two-ring).
 const double kReached[9][3] = {
     {0, 0, 0},
     {1.7856e-04, 3.2551e-04, 6.4890e-04},
