@@ -55,6 +55,10 @@ isoform_mesh_stats mesh_stats(const isoform_mesh* mesh);
 // quotes the text ("'abc' is not a number", "'-1' is negative ...").
 CLI::Validator non_negative_number();
 
+// "512M", "2G", "1.5T", "65536": bytes, with binary units (K = 1024).
+// Throws Failure (usage exit code) on anything else.
+unsigned long long parse_byte_size(const std::string& text);
+
 // A subcommand and what runs it once its arguments are parsed. run throws
 // Failure (or another std::exception) on error.
 struct Command {

@@ -55,6 +55,13 @@ int main(int argc, char** argv) {
                "isoform"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text);
+  // Given before or after the subcommand: subcommands pass on what they do
+  // not know to the app.
+  app.fallthrough();
+  std::string memory;
+  app.add_option("--memory", memory,
+                 "most memory an input file's data may take once read, such as 2G (default: half "
+                 "the machine's memory); a file that needs more is refused before it is read");
   const std::vector<Command> commands = {
       isoform::cli::add_info_command(app), isoform::cli::add_contour_command(app),
       isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app),
@@ -70,6 +77,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // app.exit prints help or version (code 0) or the usage error.
     return app.exit(error) == 0 ? 0 : kUsageExitCode;
+  }
+  if (!memory.empty()) {
+    try {
+      isoform_set_memory_budget(isoform::cli::parse_byte_size(memory));
+    } catch (const isoform::cli::Failure& failure) {
+      print_error(failure.what());
+      return failure.exit_code();
+    }
   }
   return run_parsed(commands);
 }

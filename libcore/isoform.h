@@ -116,6 +116,14 @@ typedef struct isoform_grid_info {
  * used. Errors name the file: missing, not a VDB, truncated, and so on. */
 ISOFORM_API isoform_status isoform_volume_open(const char* path, isoform_volume** out);
 
+/* The most memory one input file's data may take once decoded, in bytes.
+ * Every reader checks a file's sizes against it before allocating anything
+ * for the file, and refuses a file that claims more with a message naming
+ * the file, the size and the budget. Process-wide, for the calls that follow;
+ * 0 restores the default, half the machine's physical memory. */
+ISOFORM_API void isoform_set_memory_budget(unsigned long long bytes);
+ISOFORM_API unsigned long long isoform_memory_budget(void);
+
 typedef enum isoform_scalar_type {
   ISOFORM_U8 = 0, ISOFORM_I8, ISOFORM_U16, ISOFORM_I16, ISOFORM_U32, ISOFORM_I32,
   ISOFORM_F32, ISOFORM_F64
@@ -618,7 +626,7 @@ ISOFORM_API isoform_status isoform_volume_curvature_stats_get(const isoform_volu
 ISOFORM_API const char* isoform_graph_fit_name(int fit);
 
 /* ------------------------------------------------------------------ */
-/* Comparison with the Loop limit surface (issue 5)                   */
+/* Comparison with the Loop limit surface                             */
 /* ------------------------------------------------------------------ */
 
 /* isoform_compare samples several smooth surfaces over the same base

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dense_read.h"
+#include "input_file.h"
 #include "libcore/capi/handles.h"
 #include "libcore/errors.h"
 #include "vdb_file.h"
@@ -81,6 +82,10 @@ isoform_status isoform_volume_open(const char* path, isoform_volume** out) {
     return hand_out(open_by_format(path), out);
   });
 }
+
+void isoform_set_memory_budget(unsigned long long bytes) { isoform::vdbio::set_memory_budget(bytes); }
+
+unsigned long long isoform_memory_budget(void) { return isoform::vdbio::memory_budget(); }
 
 void isoform_raw_options_default(isoform_raw_options* options) {
   if (!options) return;

@@ -208,6 +208,11 @@ std::shared_ptr<DenseVolume> read_raw(const std::string& path, const RawLayout& 
         (layout.header_bytes ? " (with " + std::to_string(layout.header_bytes) + " header bytes)"
                              : std::string()));
   const size_t count = size_t(layout.dims[0]) * size_t(layout.dims[1]) * size_t(layout.dims[2]);
+  // The file's samples and their float copy.
+  const uint64_t in_memory = need - layout.header_bytes + uint64_t(count) * 4;
+  if (in_memory > memory_budget())
+    throw FormatError(path + ": raw data of " + dims_text(layout.dims) + " samples would take " +
+                      size_text(in_memory) + " in memory, beyond the budget of " + size_text(memory_budget()));
   std::vector<unsigned char> bytes(size_t(need - layout.header_bytes));
   std::ifstream in(path, std::ios::binary);
   in.seekg(std::streamoff(layout.header_bytes));
@@ -248,7 +253,7 @@ std::shared_ptr<DenseVolume> load_nrrd(const std::string& path) {
 bool has_nrrd_magic(const std::string& path) { return read_prefix(path, 4) == "NRRD"; }
 
 std::shared_ptr<DenseVolume> read_nrrd(const std::string& path) {
-  check_nrrd_header(path, default_memory_budget());
+  check_nrrd_header(path, memory_budget());
   try {
     return load_nrrd(path);
   } catch (const std::bad_alloc&) {

@@ -3,7 +3,9 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +47,27 @@ uint64_t default_memory_budget() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || page <= 0) return uint64_t(4) << 30;
   return uint64_t(pages) * uint64_t(page) / 2;
+}
+
+namespace {
+std::atomic<uint64_t> budget_set{0};
+}
+
+uint64_t memory_budget() {
+  const uint64_t bytes = budget_set.load(std::memory_order_relaxed);
+  return bytes ? bytes : default_memory_budget();
+}
+
+void set_memory_budget(uint64_t bytes) { budget_set.store(bytes, std::memory_order_relaxed); }
+
+std::string size_text(uint64_t bytes) {
+  static const char* const units[] = {"KiB", "MiB", "GiB", "TiB"};
+  double value = double(bytes) / 1024;
+  int unit = 0;
+  for (; unit < 3 && value >= 1024; ++unit) value /= 1024;
+  char text[48];
+  std::snprintf(text, sizeof text, "%.1f %s", value, units[unit]);
+  return text;
 }
 
 }  // namespace isoform::vdbio

@@ -180,8 +180,8 @@ void check_nrrd_header(const std::string& path, uint64_t memory_budget) {
   // Teem's array and isoform's float copy of it.
   if (bytes > memory_budget || count * 4 > memory_budget - bytes)
     throw FormatError(path + ": NRRD data of " + field("sizes") + " samples would take " +
-                      std::to_string((bytes + count * 4) >> 20) + " MiB in memory, beyond the budget of " +
-                      std::to_string(memory_budget >> 20) + " MiB");
+                      size_text(bytes + count * 4) + " in memory, beyond the budget of " +
+                      size_text(memory_budget));
   if (encoding == "gzip" || encoding == "gz") check_gzip_data(path, data, start, bytes);
 }
 

@@ -145,7 +145,7 @@ openvdb::GridBase::Ptr VdbFile::read_grid(int i) const {
   const VdbLayout now = check_vdb_layout(path_);
   if (now.file_size != layout_.file_size || now.grids != layout_.grids)
     throw FormatError(path_ + ": the file changed after it was opened; open it again");
-  check_vdb_grid(path_, now, i, default_memory_budget());
+  check_vdb_grid(path_, now, i, memory_budget());
   return reading_vdb(path_, [&] {
     openvdb::io::File file(path_);
     // Without delayed loading every value is read now, not on first access

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "input_file.h"
 #include "libcore/errors.h"
 #include "vdb_convert.h"
 
@@ -254,14 +255,9 @@ class TreeWalk {
     const uint64_t total = counts_.root_entries * 96 + counts_.upper * (32768 * entry + 8192) +
                            counts_.lower * (4096 * entry + 1024) + counts_.leaves * leaf +
                            counts_.tile_blocks * 16;
-    const auto mib = [](uint64_t bytes) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(1 << 20));
-      return std::string(text);
-    };
     if (total > budget)
       throw FormatError(in_.path() + ": a grid of " + std::to_string(counts_.leaves) + " leaves would take " +
-                        mib(total) + " in memory, beyond the budget of " + mib(budget));
+                        size_text(total) + " in memory, beyond the budget of " + size_text(budget));
   }
 
   ByteCursor& in_;

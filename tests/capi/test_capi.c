@@ -219,11 +219,45 @@ static void test_phantom_files_round_trip(void) {
   isoform_volume_free(v);
 }
 
+/* The memory budget: a grid whose decoded size passes it is refused with a
+ * message naming the file and the budget; 0 restores the default. */
+static void test_memory_budget(void) {
+  char dir[] = "/tmp/isoform-capi-XXXXXX";
+  char vdb[256];
+  isoform_volume *v = NULL, *back = NULL;
+  isoform_mesh* m = NULL;
+  isoform_contour_options o;
+  const unsigned long long fallback = isoform_memory_budget();
+  CHECK(fallback >= (1ull << 28)); /* half of any machine that builds isoform */
+  CHECK(mkdtemp(dir) != NULL);
+  snprintf(vdb, sizeof vdb, "%s/phantom.vdb", dir);
+  CHECK(isoform_volume_phantom(48, &v) == ISOFORM_OK);
+  CHECK(isoform_volume_save_vdb(v, vdb) == ISOFORM_OK);
+  isoform_contour_options_default(&o);
+  isoform_set_memory_budget(100 << 10);
+  CHECK(isoform_memory_budget() == (100 << 10));
+  CHECK(isoform_volume_open(vdb, &back) == ISOFORM_OK);
+  CHECK(isoform_contour(back, 0, &o, NULL, &m) == ISOFORM_ERR_FORMAT);
+  CHECK(m == NULL);
+  CHECK(strstr(isoform_last_error(), vdb) == isoform_last_error());
+  CHECK(strstr(isoform_last_error(), "beyond the budget of 100.0 KiB") != NULL);
+  isoform_set_memory_budget(0);
+  CHECK(isoform_memory_budget() == fallback);
+  CHECK(isoform_contour(back, 0, &o, NULL, &m) == ISOFORM_OK);
+  CHECK(m != NULL && isoform_mesh_triangle_count(m) > 0);
+  isoform_mesh_free(m);
+  isoform_volume_free(back);
+  isoform_volume_free(v);
+  unlink(vdb);
+  CHECK(rmdir(dir) == 0);
+}
+
 int main(void) {
   test_version_and_errors();
   test_dense_contour_and_copy_out();
   test_options_and_cancel();
   test_phantom_files_round_trip();
+  test_memory_budget();
   if (check_failures) fprintf(stderr, "%d checks failed\n", check_failures);
   return check_failures ? 1 : 0;
 }

@@ -110,10 +110,42 @@ def case_nrrd_sizes_beyond_the_data(tmp):
     expect_refused(tmp, bomb, [("convert", ".vdb")], "more than 100 bytes of gzip data")
 
 
+def case_memory_budget(tmp):
+    """--memory, before or after the command, bounds what a file may take once
+    read: a VDB grid, a raw scan and a NRRD past it are refused, naming the
+    file and the budget, and leave nothing; a bad size is a usage error."""
+    cube = test_cli.data("cube.vdb")
+    out = os.path.join(tmp, "out.ply")
+    for args in (["--memory", "1M", "contour", cube, "-o", out],
+                 ["contour", cube, "-o", out, "--memory", "1MiB"]):
+        code, err, peak, seconds = run_limited(args)
+        expect(code == 1 and err.startswith(f"isoform: error: {cube}: ") and
+               "in memory, beyond the budget of 1.0 MiB" in err, f"isoform {' '.join(args)}: {code} {err}")
+        expect(os.listdir(tmp) == [], f"isoform {' '.join(args)} left {os.listdir(tmp)}")
+    head = test_cli.data(test_cli.HEAD_RAW)
+    code, err, _, _ = run_limited(["convert", head, "-o", os.path.join(tmp, "head.vdb"), "--memory", "2M",
+                                   *test_cli.HEAD_LAYOUT])
+    expect(code == 1 and "raw data of 64x64x93 samples would take 2.2 MiB in memory, beyond the budget "
+           "of 2.0 MiB" in err, f"raw past the budget: {code} {err}")
+    nrrd = os.path.join(tmp, "ball.nrrd")
+    test_cli.write_ball_nrrd(nrrd, gzipped=False)
+    code, err, _, _ = run_limited(["--memory", "40K", "info", nrrd])
+    expect(code == 1 and err.startswith(f"isoform: error: {nrrd}: ") and
+           "would take 62.5 KiB in memory, beyond the budget of 40.0 KiB" in err, f"NRRD past the budget: {code} {err}")
+    os.remove(nrrd)
+    for size in ("lots", "2X", "-1G", "0"):
+        code, err, _, _ = run_limited(["--memory", size, "info", cube])
+        expect(code == 2 and "--memory" in err, f"--memory {size}: exit {code} {err}")
+    code, err, _, _ = run_limited(["contour", cube, "-o", out, "--memory", "2G"])
+    expect(code == 0 and os.path.getsize(out) > 0, f"within the budget: exit {code} {err}")
+    os.remove(out)
+
+
 GROUPS = {
     "hostile_vdb": [case_hostile_vdbs],
     "hostile_mesh_nrrd": [case_stl_subnormal_repeated_vertex, case_stl_solid_header_lying_count,
                           case_nrrd_sizes_beyond_the_data],
+    "memory_budget": [case_memory_budget],
 }
 
 if __name__ == "__main__":

@@ -243,7 +243,7 @@ TEST(VdbCheck, ATreeBeyondTheBudgetIsRefused) {
   check_vdb_grid(dir.file("fog.vdb"), layout, 0, uint64_t(64) << 20);
   const std::string message =
       error_of<FormatError>([&] { check_vdb_grid(dir.file("fog.vdb"), layout, 0, uint64_t(1) << 18); });
-  EXPECT_NE(message.find("a grid of 27 leaves would take 0.3 MiB in memory, beyond the budget of 0.2 MiB"),
+  EXPECT_NE(message.find("a grid of 27 leaves would take 353.6 KiB in memory, beyond the budget of 256.0 KiB"),
             std::string::npos)
       << message;
 }
