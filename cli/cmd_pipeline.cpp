@@ -6,6 +6,8 @@
 // points kept on their fitted surfaces, since the next step interpolates
 // them), the side-vertex surface over it (Chapter 6), and the comparison
 // with the Loop limit surface against the volume itself (a study folder).
+// Blender, when present, renders pictures of them, and a page
+// (NAME-report.html) shows the figures and the pictures together.
 // Each step is one small function.
 #include <filesystem>
 #include <iostream>
@@ -19,7 +21,9 @@
 #include "contouring.h"
 #include "curvature_step.h"
 #include "paths.h"
+#include "pipeline_page.h"
 #include "reduce_step.h"
+#include "study_tools.h"
 #include "report.h"
 #include "surface_steps.h"
 
@@ -42,6 +46,7 @@ struct PipelineArgs {
   std::string keep = "10%";
   int level = 2;          // side-vertex tessellation
   int compare_level = 4;  // comparison lattice
+  bool no_render = false;
   bool json = false;
 };
 
@@ -51,7 +56,10 @@ struct PipelineResult {
   std::string volume_path;
   std::string mesh_path;
   std::string curvature_path;
-  std::string reduced_path, smooth_path, study_path;
+  std::string reduced_path, smooth_path, study_path, page_path;
+  // Picture files relative to the folder, with captions; or why there are none.
+  std::vector<std::pair<std::string, std::string>> pictures;
+  std::string pictures_note;
   isoform_mesh_stats stats{};
   double contour_seconds = 0.0;
   double curvature_seconds = 0.0;
@@ -106,10 +114,74 @@ void surface_steps(const isoform_mesh* reduced, const isoform_volume* volume, in
                                result.reduced_path, result.study_path, args.settings.progress);
 }
 
+// Blender renders the pictures from the files just written, in one run
+// (cli/study/render_pipeline.py); without it, or when it fails, the page
+// says why and everything else stands.
+void make_pictures(const PipelineArgs& args, PipelineResult& result) {
+  const std::string blender = args.no_render ? "" : find_program({"blender"});
+  const std::string log = path_in(args.folder, result.stem + "-pictures.log");
+  if (args.no_render) {
+    result.pictures_note = "No pictures: --no-render.";
+  } else if (blender.empty()) {
+    result.pictures_note = "No pictures: Blender was not found (apt-get install blender).";
+  } else {
+    const int code = run_program({blender, "-b", "--factory-startup", "--python-exit-code", "1", "--python",
+                                  study_scripts_folder() + "/render_pipeline.py", "--", args.folder, result.stem},
+                                 log);
+    if (code != 0)
+      result.pictures_note = "No pictures: Blender exited with " + std::to_string(code) + " (see " + result.stem +
+                             "-pictures.log).";
+  }
+  if (!result.pictures_note.empty()) {
+    if (!args.settings.progress.quiet) std::cerr << "isoform: note: " << result.pictures_note << '\n';
+    return;
+  }
+  std::filesystem::remove(log);
+  const std::string& s = result.stem;
+  result.pictures = {{s + "-curvature.png", "The contour coloured by its mean curvature (blue below zero, red above)"},
+                     {s + "-reduced.png", "The reduced mesh (Chapter 5), its triangles drawn"},
+                     {s + "-smooth.png", "The side-vertex surface over the reduced mesh (Chapter 6)"}};
+  for (auto& [name, measures] : result.study.items())
+    for (const char* kind : {"isophotes", "reflection"})
+      result.pictures.push_back({s + "-study/render-" + name + "-" + kind + ".png",
+                                 "Comparison: " + name + ", " + (kind[0] == 'i' ? "isophotes" : "reflection lines")});
+}
+
+std::string relative_to(const std::string& folder, const std::string& path) {
+  return std::filesystem::path(path).lexically_relative(folder).string();
+}
+
+void write_page(const PipelineArgs& args, const PipelineResult& result) {
+  PipelinePage page;
+  page.title = args.input.empty() ? "phantom " + std::to_string(args.size) + "^3" : args.input;
+  page.rows = {
+      {"contour (Chapter 3)", std::to_string(result.stats.triangles) + " triangles, " +
+                                  std::to_string(result.stats.parts) + " parts, isovalue " +
+                                  format_number(result.stats.isovalue) + ", " + format_seconds(result.contour_seconds)},
+      {"mean curvature (Chapter 4)", "median " + format_number(result.curvature["mean"]["p50"]) + ", 2-98 % [" +
+                                         format_number(result.curvature["mean"]["p2"]) + ", " +
+                                         format_number(result.curvature["mean"]["p98"]) + "]"},
+      {"reduction (Chapter 5)", std::to_string(result.reduce["triangles_after"].get<long long>()) +
+                                    " triangles (" + args.keep + " asked), " + format_seconds(result.reduce_seconds)},
+      {"side-vertex surface (Chapter 6)", "level " + std::to_string(args.level) + ", " +
+                                              std::to_string(result.smooth["triangles"].get<long long>()) + " triangles"}};
+  for (auto& [name, m] : result.study.items())
+    page.rows.push_back({"against the volume: " + name,
+                         "deviation RMS " + format_number(m["deviation_voxels"]["rms"].get<double>()) +
+                             " voxels, normal gap max " + format_number(m["normal_gap"]["max"].get<double>()) + " rad"});
+  page.pictures = result.pictures;
+  page.pictures_note = result.pictures_note;
+  for (const std::string& path : {result.mesh_path, result.curvature_path, result.reduced_path, result.smooth_path,
+                                  result.study_path + "/report.md"})
+    page.files.push_back(relative_to(args.folder, path));
+  write_pipeline_page(result.page_path, page);
+}
+
 std::vector<std::string> written(const PipelineResult& r) {
   std::vector<std::string> files = {r.mesh_path, r.curvature_path, r.reduced_path, r.smooth_path,
                                     r.study_path + "/report.md"};
   if (r.stem == "phantom") files.insert(files.begin(), r.volume_path);
+  files.push_back(r.page_path);
   return files;
 }
 
@@ -127,6 +199,7 @@ void report_pipeline(const PipelineArgs& args, const PipelineResult& result) {
                 {"reduce", result.reduce},
                 {"smooth", result.smooth},
                 {"compare", result.study},
+                {"pictures", result.pictures_note.empty() ? std::string("made") : result.pictures_note},
                 {"written", written(result)}});
     return;
   }
@@ -165,6 +238,7 @@ void run_pipeline(PipelineArgs args) {
   result.reduced_path = path_in(args.folder, result.stem + "-reduced.ply");
   result.smooth_path = path_in(args.folder, result.stem + "-smooth.ply");
   result.study_path = path_in(args.folder, result.stem + "-study");
+  result.page_path = path_in(args.folder, result.stem + "-report.html");
   if (args.input.empty()) {
     write_phantom(args.size, result.volume_path);
     if (args.settings.auto_isovalue) {  // no --iso: the skull's surfaces
@@ -178,6 +252,8 @@ void run_pipeline(PipelineArgs args) {
   curvature_of(mesh.get(), args, result);
   reduce_step(mesh.get(), args, result);
   surface_steps(mesh.get(), volume.get(), grid, args, result);
+  make_pictures(args, result);
+  write_page(args, result);
   report_pipeline(args, result);
 }
 
@@ -195,7 +271,9 @@ Command add_pipeline_command(CLI::App& parent) {
       "their fitted surfaces), DIR/NAME-smooth.ply (the side-vertex surface over it, Chapter 6) "
       "and DIR/NAME-study/ (the flat triangles, the Loop limit surface and the side-vertex "
       "surface measured against the volume: report.md, report.json, samples.csv, one PLY per "
-      "surface; `isoform compare` makes the pictures). NAME is phantom or the input's name.");
+      "surface), then, with Blender, pictures of each (NAME-curvature.png, NAME-reduced.png, "
+      "NAME-smooth.png, the study's isophotes and reflection lines) and DIR/NAME-report.html, "
+      "the page that shows them. NAME is phantom or the input's name.");
   app->add_option("file", args->input, "Volume file (.vdb); default: the built-in phantom");
   app->add_option("--grid", args->grid, "Grid to contour; default: the first scalar grid");
   app->add_option("-o,--output", args->folder, "Output folder DIR, created if missing")
@@ -214,6 +292,7 @@ Command add_pipeline_command(CLI::App& parent) {
   app->add_option("--compare-level", args->compare_level, "Comparison lattice level k per triangle")
       ->check(CLI::Range(1, 32))
       ->capture_default_str();
+  app->add_flag("--no-render", args->no_render, "Skip the Blender pictures");
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args] { run_pipeline(*args); }};
 }

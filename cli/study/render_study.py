@@ -127,13 +127,11 @@ def render(path, args):
     bpy.ops.render.render(write_still=True)
 
 
-def main():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    args = parse(argv)
-    plys = sorted(glob.glob(os.path.join(args["study"], "surface-*.ply")))
+def render_folder(study, args):
+    """Renders every surface-<name>.ply of the study folder."""
+    plys = sorted(glob.glob(os.path.join(study, "surface-*.ply")))
     if not plys:
-        raise SystemExit(f"{args['study']}: no surface-*.ply to render")
-    clear_scene()
+        raise SystemExit(f"{study}: no surface-*.ply to render")
     camera, light = None, None
     for ply in plys:
         name = os.path.basename(ply)[len("surface-"):-len(".ply")]
@@ -143,8 +141,16 @@ def main():
         for kind in ("isophotes", "reflection"):
             obj.data.materials.clear()
             obj.data.materials.append(stripe_material(f"{name} {kind}", kind, light))
-            render(os.path.join(args["study"], f"render-{name}-{kind}.png"), args)
+            render(os.path.join(study, f"render-{name}-{kind}.png"), args)
         bpy.data.objects.remove(obj, do_unlink=True)
 
 
-main()
+def main():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    args = parse(argv)
+    clear_scene()
+    render_folder(args["study"], args)
+
+
+if __name__ == "__main__":
+    main()
