@@ -17,17 +17,7 @@ data="${ISOFORM_SHARED_DATA:-$root/../shared/data}"
 packages=(cmake g++ make libopenvdb-dev libboost-iostreams-dev libtbb-dev libeigen3-dev libteem-dev
   libcli11-dev nlohmann-json3-dev libpng-dev libosd-dev libvtk9-dev libmeshoptimizer-dev libopenmesh-dev
   python3-numpy time)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "bench/run-process.sh: installing ${missing[*]}" >&2
-  sudo=()
-  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
-  "${sudo[@]}" apt-get update
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+source "$root/bench/need-packages.sh"
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DISOFORM_BUILD_BENCH=ON -DISOFORM_BUILD_TESTS=OFF >/dev/null
 cmake --build "$build" -j2 --target isoform_cli isoform_bench contour_openvdb contour_vtk reduce_meshopt \

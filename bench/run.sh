@@ -18,17 +18,7 @@ data="${ISOFORM_SHARED_DATA:-$root/../shared/data}"
 
 packages=(cmake g++ make libopenvdb-dev libboost-iostreams-dev libtbb-dev libeigen3-dev libteem-dev
   libcli11-dev nlohmann-json3-dev libvtk9-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "bench/run.sh: installing ${missing[*]}" >&2
-  sudo=()
-  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
-  "${sudo[@]}" apt-get update
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+source "$root/bench/need-packages.sh"
 
 if [[ ! -f "$data/cube.vdb" || ! -f "$data/headsq_64x64x93_u16le.raw" ]]; then
   echo "bench/run.sh: the real test data are not in $data (set ISOFORM_SHARED_DATA)" >&2

@@ -87,39 +87,35 @@ def peer(build, name):
     return path if os.path.exists(path) else None
 
 
+def contour_row(job, label, isoform_input, iso, peer_name, peer_argv, args, work):
+    """One contour input: isoform on isoform_input against peer_argv (which
+    ends with the peer's output file)."""
+    out = os.path.join(work, "out-isoform.ply")
+    commands = {"isoform": [isoform_binary(args.build), "contour", isoform_input, "--iso", str(iso), "-o", out, "-q"],
+                peer_name: peer_argv}
+    s = alternate(commands, args.pairs)
+    row = {"input": label, "triangles": mesh_checks.triangle_count(out),
+           "peer_triangles": mesh_checks.triangle_count(peer_argv[-1]),
+           "isoform": summary(s["isoform"]), "peer": summary(s[peer_name])}
+    print(f"{job} {label}: {row['isoform']['wall']:.3f} s / {row['peer']['wall']:.3f} s", flush=True)
+    return row
+
+
 def contour_vdb_jobs(args, work, prepared):
-    rows = []
-    for case in prepared.vdb_cases(args.no_sphere):
-        out_i, out_p = os.path.join(work, "out-isoform.ply"), os.path.join(work, "out-openvdb.ply")
-        commands = {"isoform": [isoform_binary(args.build), "contour", case.path, "--iso", str(case.iso),
-                                "-o", out_i, "-q"],
-                    "OpenVDB": [peer(args.build, "contour_openvdb"), case.path, str(case.iso), out_p]}
-        s = alternate(commands, args.pairs)
-        rows.append({"input": case.label, "triangles": mesh_checks.triangle_count(out_i),
-                     "peer_triangles": mesh_checks.triangle_count(out_p),
-                     "isoform": summary(s["isoform"]), "peer": summary(s["OpenVDB"])})
-        print(f"contour-vdb {case.label}: {rows[-1]['isoform']['wall']:.3f} s / "
-              f"{rows[-1]['peer']['wall']:.3f} s", flush=True)
-    return rows
+    program, out = peer(args.build, "contour_openvdb"), os.path.join(work, "out-openvdb.ply")
+    return [contour_row("contour-vdb", case.label, case.path, case.iso, "OpenVDB",
+                        [program, case.path, str(case.iso), out], args, work)
+            for case in prepared.vdb_cases(args.no_sphere)]
 
 
 def contour_dense_jobs(args, work, prepared):
-    rows = []
-    if not peer(args.build, "contour_vtk"):
-        return rows
-    for case in prepared.dense_cases():
-        out_i, out_p = os.path.join(work, "out-isoform.ply"), os.path.join(work, "out-vtk.ply")
-        commands = {"isoform": [isoform_binary(args.build), "contour", case.nhdr, "--iso", str(case.iso),
-                                "-o", out_i, "-q"],
-                    "VTK": [peer(args.build, "contour_vtk"), case.raw, *map(str, case.dims), case.type,
-                            *map(str, case.spacing), str(case.iso), out_p]}
-        s = alternate(commands, args.pairs)
-        rows.append({"input": case.label, "triangles": mesh_checks.triangle_count(out_i),
-                     "peer_triangles": mesh_checks.triangle_count(out_p),
-                     "isoform": summary(s["isoform"]), "peer": summary(s["VTK"])})
-        print(f"contour-dense {case.label}: {rows[-1]['isoform']['wall']:.3f} s / "
-              f"{rows[-1]['peer']['wall']:.3f} s", flush=True)
-    return rows
+    program, out = peer(args.build, "contour_vtk"), os.path.join(work, "out-vtk.ply")
+    if not program:
+        return []
+    return [contour_row("contour-dense", case.label, case.nhdr, case.iso, "VTK",
+                        [program, case.raw, *map(str, case.dims), case.type, *map(str, case.spacing),
+                         str(case.iso), out], args, work)
+            for case in prepared.dense_cases()]
 
 
 def reduce_jobs(args, work, prepared):
@@ -185,6 +181,7 @@ def commit():
 
 
 README = os.path.join(HERE, "..", "..", "README.md")
+RESULTS = os.path.join(HERE, "..", "RESULTS.md")
 START, END = "<!-- whole-process bench: start -->", "<!-- whole-process bench: end -->"
 
 
@@ -209,7 +206,8 @@ def main():
     parser.add_argument("--pairs", type=int, default=5)
     parser.add_argument("--only", nargs="*", default=["contour-vdb", "contour-dense", "reduce", "first-call"])
     parser.add_argument("--no-sphere", action="store_true")
-    parser.add_argument("--results", default=os.path.join(HERE, "..", "RESULTS.md"))
+    parser.add_argument("--results", default=RESULTS, help="results file (the README's table is written "
+                        "only with the default, bench/RESULTS.md)")
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
     started = datetime.datetime.now(datetime.timezone.utc)
@@ -228,7 +226,8 @@ def main():
     with open(temporary, "w") as f:
         f.write(text)
     os.replace(temporary, args.results)
-    update_readme(report.readme_table(context, results))
+    if os.path.abspath(args.results) == os.path.abspath(RESULTS):
+        update_readme(report.readme_table(context, results))
     with open(os.path.join(args.work, "results.json"), "w") as f:
         json.dump({"context": context, "results": results}, f, indent=1)
     print(text)

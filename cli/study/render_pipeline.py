@@ -34,21 +34,11 @@ def shaded_material(name, light, vertex_colours, wire):
     """Emission of a base colour (the mesh's vertex colours, or light grey)
     darkened where the surface turns from the light; with wire, the
     triangles' edges drawn dark over it."""
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    nodes, links = mat.node_tree.nodes, mat.node_tree.links
-    nodes.clear()
-    out = nodes.new("ShaderNodeOutputMaterial")
-    emit = nodes.new("ShaderNodeEmission")
-    geo = nodes.new("ShaderNodeNewGeometry")
-    dot = nodes.new("ShaderNodeVectorMath")
-    dot.operation = "DOT_PRODUCT"
-    dot.inputs[1].default_value = light
-    links.new(geo.outputs["Normal"], dot.inputs[0])
+    mat, nodes, links, emit = study.emission_material(name)
     shade = nodes.new("ShaderNodeMapRange")  # n.l in [-0.2, 1] -> [0.15, 1]
     shade.inputs["From Min"].default_value = -0.2
     shade.inputs["To Min"].default_value = 0.15
-    links.new(dot.outputs["Value"], shade.inputs["Value"])
+    links.new(study.normal_dot(nodes, links, light), shade.inputs["Value"])
     mix = nodes.new("ShaderNodeMixRGB")
     mix.blend_type = "MULTIPLY"
     mix.inputs["Fac"].default_value = 1.0
@@ -70,7 +60,6 @@ def shaded_material(name, light, vertex_colours, wire):
         over.inputs["Color2"].default_value = (0.08, 0.08, 0.1, 1.0)
         colour = over.outputs["Color"]
     links.new(colour, emit.inputs["Color"])
-    links.new(emit.outputs[0], out.inputs["Surface"])
     return mat
 
 

@@ -51,22 +51,35 @@ def import_ply(path):
     return obj
 
 
-def stripe_material(name, kind, light):
-    """Emission only, black and white stripes of a scalar: n . l for
-    isophotes, the z of the reflected view vector for reflection lines."""
+def emission_material(name):
+    """A new material whose surface is one emission node, lit by nothing:
+    (material, nodes, links, the emission node)."""
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
     nodes, links = mat.node_tree.nodes, mat.node_tree.links
     nodes.clear()
     out = nodes.new("ShaderNodeOutputMaterial")
     emit = nodes.new("ShaderNodeEmission")
+    links.new(emit.outputs[0], out.inputs["Surface"])
+    return mat, nodes, links, emit
+
+
+def normal_dot(nodes, links, light):
+    """The output socket of n . light, n the shading normal."""
+    geo = nodes.new("ShaderNodeNewGeometry")
+    dot = nodes.new("ShaderNodeVectorMath")
+    dot.operation = "DOT_PRODUCT"
+    dot.inputs[1].default_value = light
+    links.new(geo.outputs["Normal"], dot.inputs[0])
+    return dot.outputs["Value"]
+
+
+def stripe_material(name, kind, light):
+    """Emission only, black and white stripes of a scalar: n . l for
+    isophotes, the z of the reflected view vector for reflection lines."""
+    mat, nodes, links, emit = emission_material(name)
     if kind == "isophotes":
-        geo = nodes.new("ShaderNodeNewGeometry")
-        dot = nodes.new("ShaderNodeVectorMath")
-        dot.operation = "DOT_PRODUCT"
-        dot.inputs[1].default_value = light
-        links.new(geo.outputs["Normal"], dot.inputs[0])
-        scalar = dot.outputs["Value"]
+        scalar = normal_dot(nodes, links, light)
         bands = 10.0
     else:
         coords = nodes.new("ShaderNodeTexCoord")
@@ -90,7 +103,6 @@ def stripe_material(name, kind, light):
     ramp.color_ramp.elements[1].color = (0.95, 0.95, 0.9, 1.0)
     links.new(step.outputs[0], ramp.inputs["Fac"])
     links.new(ramp.outputs["Color"], emit.inputs["Color"])
-    links.new(emit.outputs[0], out.inputs["Surface"])
     return mat
 
 
