@@ -18,6 +18,8 @@ namespace {
 constexpr int64_t kVdbMagic = 0x56444220;  // "VDB " as OpenVDB writes it
 constexpr uint32_t kOldestReadable = 222;    // the first version with per-grid compression
 constexpr const char* kHalfSuffix = "_HalfFloat";
+// GridBase::META_SAVE_HALF_FLOAT.
+constexpr const char* kHalfFloatMetadata = "is_saved_as_half_float";
 
 // Fixed-size metadata types: OpenVDB reads sizeof(T) bytes whatever length
 // the file gives, so the length must be exactly that or the stream would be
@@ -77,21 +79,34 @@ void check_delayed_load(ByteCursor& in, uint32_t num_bytes) {
 }
 
 // MetaMap::readMeta. Unknown types are read by OpenVDB as raw bytes of the
-// given length; known ones by their own readers.
-void check_metadata(ByteCursor& in) {
+// given length; known ones by their own readers. Returns whether the
+// metadata say the grid's reals are stored as half floats: OpenVDB's
+// readers follow the grid's metadata "is_saved_as_half_float" (a bool; the
+// last entry of that name counts), not the grid type name's suffix, since
+// reading the metadata replaces what the descriptor set.
+bool check_metadata(ByteCursor& in) {
+  bool half = false;
   const uint32_t count = in.get<uint32_t>("the metadata count");
   for (uint32_t i = 0; i < count; ++i) {
     const std::string name = in.string("a metadata name");
     const std::string type = in.string("a metadata type name");
     const uint32_t num_bytes = in.get<uint32_t>("a metadata length");
     const auto fixed = fixed_metadata_sizes().find(type);
+    if (name == kHalfFloatMetadata && type != "bool")
+      in.fail("metadata '" + name + "' of type " + type + ", where OpenVDB expects a bool");
     if (type == "__delayedload") {
       check_delayed_load(in, num_bytes);
     } else if (fixed != fixed_metadata_sizes().end()) {
       if (num_bytes != fixed->second)
         in.fail("metadata '" + name + "' of type " + type + " says " + std::to_string(num_bytes) +
                 " bytes, not " + std::to_string(fixed->second));
-      in.skip(num_bytes, "a metadata value");
+      if (type == "bool") {
+        const unsigned char value = in.get<unsigned char>("a metadata value");
+        if (value > 1) in.fail("metadata '" + name + "' holds " + std::to_string(value) + " where a bool is 0 or 1");
+        if (name == kHalfFloatMetadata) half = value == 1;
+      } else {
+        in.skip(num_bytes, "a metadata value");
+      }
     } else if (type == "string" || !metadata_type_registered(type)) {
       in.skip(num_bytes, "a metadata value");
     } else {
@@ -99,6 +114,7 @@ void check_metadata(ByteCursor& in) {
                         ", which isoform does not read");
     }
   }
+  return half;
 }
 
 // The maps of math/Maps.h: their read() takes a fixed number of doubles.
@@ -247,7 +263,7 @@ VdbLayout check_vdb_layout(const std::string& path) {
     in.seek(uint64_t(g.grid_pos), "a grid");
     in.limit(uint64_t(g.block_pos));
     check_compression(in);
-    check_metadata(in);
+    g.half = check_metadata(in);
     check_transform(in);
     in.limit(in.size());
   }
@@ -270,10 +286,10 @@ void check_vdb_grid(const std::string& path, const VdbLayout& layout, int i, uin
   in.seek(uint64_t(g.grid_pos), "a grid");
   in.limit(uint64_t(g.block_pos));
   const uint32_t compression = in.get<uint32_t>("a grid's compression flags");
-  check_metadata(in);
+  const bool half = check_metadata(in);
   check_transform(in);
   in.limit(in.size());
-  check_tree(in, TreeFormat{g.type, g.half, compression}, uint64_t(g.end_pos), memory_budget);
+  check_tree(in, TreeFormat{g.type, half, compression}, uint64_t(g.end_pos), memory_budget);
 }
 
 }  // namespace isoform::vdbio

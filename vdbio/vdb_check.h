@@ -24,7 +24,8 @@ struct VdbGridEntry {
   std::string type;         // without the half-float suffix, e.g. "Tree_float_5_4_3"
   std::string parent;       // the grid this one instances, or empty
   int parent_index = -1;    // its index, as OpenVDB finds it by that name
-  bool half = false;        // real values stored as 16-bit floats
+  bool half = false;        // reals stored as 16-bit floats: as the grid's metadata say, which
+                            // OpenVDB follows rather than the type name's suffix
   int64_t grid_pos = 0, block_pos = 0, end_pos = 0;
 };
 

@@ -291,5 +291,43 @@ TEST(VdbCheck, AThousandFailedOpensHoldNoMoreMemoryThanOne) {
   }
 }
 
+// fuzz_vdb found a file whose grid type name says half floats but whose
+// metadata "is_saved_as_half_float" had been renamed: OpenVDB follows the
+// metadata and read the tree as full floats, out of step with the walk,
+// building 2,048 leaves from bytes the walk counted as 175. The walk now
+// follows the metadata as OpenVDB does: such a file is refused, and a file
+// whose metadata say half floats is walked as half floats.
+TEST(VdbCheck, HalfFloatsAreWhatTheGridsMetadataSay) {
+  TempDir dir;
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  for (int i = 0; i < 24; ++i)
+    for (int j = 0; j < 24; ++j) grid->tree().setValue(openvdb::Coord(i, j, i % 5), float(i + j));
+  grid->setSaveFloatAsHalf(true);
+  const std::string path = dir.file("half.vdb");
+  test::write_vdb_sample({"half", {grid}}, openvdb::io::COMPRESS_NONE, path);
+  const std::string bytes = read_bytes(path);
+  const VdbLayout layout = check_vdb_layout(path);
+  ASSERT_TRUE(layout.grids.at(0).half);
+  check_vdb_grid(path, layout, 0, default_memory_budget());
+
+  const size_t at = bytes.find("is_saved_as_half_float");
+  ASSERT_NE(at, std::string::npos);
+  std::string renamed = bytes;
+  renamed[at] = 'X';  // the name OpenVDB looks for is gone: full floats
+  write_bytes(path, renamed);
+  EXPECT_FALSE(check_vdb_layout(path).grids.at(0).half);
+  const std::string message = error_of<FormatError>([&] { check_vdb_grid(path, check_vdb_layout(path), 0, default_memory_budget()); });
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+
+  // The bool itself: "bool" type name, 4-byte length, then the value byte.
+  const size_t value = at + std::string("is_saved_as_half_float").size() + 4 + 4 + 4;
+  ASSERT_EQ(bytes[value], 1);
+  std::string two = bytes;
+  two[value] = 2;
+  write_bytes(path, two);
+  EXPECT_NE(error_of<FormatError>([&] { check_vdb_layout(path); }).find("where a bool is 0 or 1"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace isoform::vdbio
