@@ -60,11 +60,18 @@ Header read_header(const std::string& path) {
   while (true) {
     const size_t eol = bytes.find('\n', at);
     if (eol == std::string::npos) {
+      // Without a whole first line the magic was never seen: Teem would be
+      // handed a file that is not NRRD (and leaks on those).
+      if (first) throw FormatError(path + ": not a NRRD file (its first line is not NRRD0001 to NRRD0005)");
       if (bytes.size() >= kMaxHeader) throw FormatError(path + ": a NRRD header longer than 1 MiB");
       h.end = bytes.size();  // a detached header may end without a blank line
       return h;
     }
     std::string line = bytes.substr(at, eol - at);
+    // Teem reads a header line as a C string: past a NUL byte the two
+    // readers would see different fields.
+    if (line.find('\0') != std::string::npos)
+      throw FormatError(path + ": a NRRD header line holds a NUL byte");
     at = eol + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (first) {
@@ -114,10 +121,13 @@ void check_gzip_data(const std::string& path, const std::string& data, uint64_t 
       z.avail_in = uInt(in.gcount());
       if (z.avail_in == 0) break;
     }
+    // No more output than the sizes need, as Teem asks: its reader then
+    // meets a gzip trailer (and its check) exactly where this one does.
+    const uInt room = uInt(std::min<uint64_t>(plain.size(), bytes - got));
     z.next_out = plain.data();
-    z.avail_out = uInt(plain.size());
+    z.avail_out = room;
     status = inflate(&z, Z_NO_FLUSH);
-    got += plain.size() - z.avail_out;
+    got += room - z.avail_out;
     if (status == Z_STREAM_END) {
       if (inflateReset(&z) != Z_OK) break;
     } else if (status != Z_OK && status != Z_BUF_ERROR) {
@@ -125,9 +135,11 @@ void check_gzip_data(const std::string& path, const std::string& data, uint64_t 
     }
   }
   inflateEnd(&z);
+  const bool broken = status < 0 && status != Z_BUF_ERROR;
   if (got < bytes)
     throw FormatError(path + ": NRRD gzip data give " + std::to_string(got) + " of the " + std::to_string(bytes) +
-                      " bytes its sizes need" + (status < 0 && status != Z_BUF_ERROR ? " (they do not decode)" : ""));
+                      " bytes its sizes need" + (broken ? " (they do not decode)" : ""));
+  if (broken) throw FormatError(path + ": NRRD gzip data do not decode (a damaged stream or check sum)");
 }
 
 }  // namespace
@@ -168,6 +180,10 @@ void check_nrrd_header(const std::string& path, uint64_t memory_budget) {
   // What those bytes can decode to, by the encoding.
   std::string encoding = field("encoding");
   std::transform(encoding.begin(), encoding.end(), encoding.begin(), ::tolower);
+  static const char* const kEncodings[] = {"raw", "gzip", "gz", "bzip2", "bz2", "ascii", "text", "txt", "hex"};
+  if (encoding.empty()) throw FormatError(path + ": a NRRD header without an encoding field");
+  if (std::find(std::begin(kEncodings), std::end(kEncodings), encoding) == std::end(kEncodings))
+    throw FormatError(path + ": NRRD encoding \"" + field("encoding") + "\" is not one isoform reads");
   uint64_t most = UINT64_MAX;  // bzip2: only the budget bounds it
   if (encoding == "raw") most = skip == "-1" ? data_size : present;
   if (encoding == "gzip" || encoding == "gz") most = present > UINT64_MAX / kDeflateRatio ? UINT64_MAX : present * kDeflateRatio;
