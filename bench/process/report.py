@@ -90,8 +90,8 @@ def markdown(context, results):
 
 def readme_table(context, results):
     """The README's short table: one line per input of each job."""
-    lines = [f"From `bench/RESULTS.md` ({context['started']}, {context['machine'].split(',')[0]}; "
-             f"medians of {context['pairs']} fresh processes each; ratio > 1: isoform is faster):", "",
+    lines = [f"From `bench/RESULTS.md`, which says when, where and at which commit it ran (medians of "
+             f"{context['pairs']} fresh processes each; ratio > 1: isoform is faster):", "",
              "| job | input | isoform | peer | peer / isoform, wall | isoform / peer, memory |",
              "|---|---|---:|---:|---:|---:|"]
     for job, peer in (("contour-vdb", "OpenVDB"), ("contour-dense", "VTK")):

@@ -198,6 +198,19 @@ def update_readme(table):
     os.replace(README + ".tmp", README)
 
 
+def user_arguments(argv):
+    """The options a user gave bench/run-process.sh: without the folders it passes itself."""
+    out, skip = [], False
+    for a in argv:
+        if skip:
+            skip = False
+        elif a in ("--build", "--data", "--work"):
+            skip = True
+        else:
+            out.append(a)
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", required=True)
@@ -219,7 +232,7 @@ def main():
         results[name] = jobs[name](args, args.work, prepared)
     load = os.getloadavg()
     context = {"started": started.strftime("%Y-%m-%d %H:%M UTC"), "machine": machine(), "commit": commit(),
-               "pairs": args.pairs, "command": " ".join(["bench/run-process.sh", *sys.argv[1:]]),
+               "pairs": args.pairs, "command": " ".join(["bench/run-process.sh", *user_arguments(sys.argv[1:])]),
                "load": f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f}"}
     text = report.markdown(context, results)
     temporary = args.results + ".tmp"
