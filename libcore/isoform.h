@@ -80,7 +80,11 @@ typedef enum isoform_stage {
   ISOFORM_STAGE_MERGE = 3,    /* shared vertices, triangle table */
   ISOFORM_STAGE_TOPOLOGY = 4, /* neighbours, parts */
   ISOFORM_STAGE_DONE = 5,
-  ISOFORM_STAGE_CURVATURE = 6 /* fitting each vertex's platelet */
+  ISOFORM_STAGE_CURVATURE = 6, /* fitting each vertex's platelet */
+  ISOFORM_STAGE_REDUCE = 8,    /* isoform_reduce removing triangles (after
+                                  ISOFORM_STAGE_CURVATURE when the mesh had none) */
+  ISOFORM_STAGE_PATCH = 10,    /* isoform_patch_tessellate */
+  ISOFORM_STAGE_COMPARE = 16   /* isoform_compare sampling the surfaces */
 } isoform_stage;
 
 /* ------------------------------------------------------------------ */
@@ -639,9 +643,6 @@ ISOFORM_API const char* isoform_graph_fit_name(int fit);
  * mean-curvature jump across edges, curvature spread, time per million
  * samples, and the triangles of each surface's tessellation. */
 
-/* The stage isoform_compare reports while it samples (isoform_progress). */
-#define ISOFORM_STAGE_COMPARE 16
-
 typedef enum isoform_reference_kind {
   ISOFORM_REFERENCE_NONE = 0,   /* no deviation measured */
   ISOFORM_REFERENCE_SPHERE = 1, /* exact distance from a sphere, world units */
@@ -751,10 +752,6 @@ ISOFORM_API isoform_status isoform_compare_report_write(const isoform_compare_re
 ISOFORM_API void isoform_compare_report_free(isoform_compare_report* report);
 /* Reduction (Hamann 1991, Chapter 5)                                 */
 /* ------------------------------------------------------------------ */
-
-/* The stage isoform_reduce reports in isoform_progress (an isoform_stage
- * value; ISOFORM_STAGE_CURVATURE first when the mesh had no curvature). */
-#define ISOFORM_STAGE_REDUCE 8
 
 /* How the point that replaces a removed triangle is made. */
 typedef enum isoform_reduce_point {
@@ -880,9 +877,6 @@ ISOFORM_API const char* isoform_mesh_reduce_left_alone(const isoform_mesh* mesh,
  * (u, v), weight 1-u-v on its first vertex, u on its second, v on its third;
  * u, v >= 0, u + v <= 1. Coordinates are the mesh's (world units). */
 typedef struct isoform_patch isoform_patch;
-
-/* The progress stage of isoform_patch_tessellate (an isoform_stage value). */
-#define ISOFORM_STAGE_PATCH 10
 
 typedef enum isoform_patch_blend {
   ISOFORM_PATCH_BLEND_PRINTED = 0, /* w_i ~ u_j u_k, as printed in (6.2)-(6.3) */

@@ -106,7 +106,7 @@ isoform_status isoform_compare(const isoform_mesh* mesh, const isoform_volume* v
     if (options) o = *options;
     const cmp::CompareSettings settings = settings_of(o);
     const isoform::Progress p(progress);
-    p.stage(isoform_stage(ISOFORM_STAGE_COMPARE));
+    p.stage(ISOFORM_STAGE_COMPARE);
     const isoform::Mesh& base = mesh->mesh;
     const std::string what = o.input_name ? o.input_name : "mesh";
     if (base.triangle_count() == 0) throw isoform::InvalidArgument(what + ": the mesh has no triangles");

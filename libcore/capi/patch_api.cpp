@@ -131,7 +131,7 @@ isoform_status isoform_patch_tessellate(const isoform_patch* patch, int level, i
     if (!patch || !out) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_patch_tessellate: NULL argument");
     *out = nullptr;
     const isoform::Progress p(progress);
-    p.stage(isoform_stage(ISOFORM_STAGE_PATCH));
+    p.stage(ISOFORM_STAGE_PATCH);
     auto mesh = std::make_unique<isoform_mesh>();
     mesh->mesh = isoform::patch::tessellate(*patch->surface, level, p);
     p.stage(ISOFORM_STAGE_DONE);

@@ -134,7 +134,7 @@ WorkMesh prepared_work_mesh(const Mesh& mesh, const VertexStars& stars, const st
   }
   const VertexCurvature& curvature = *computed ? fitted : mesh.curvature;
   *curvature_stats = curvature.stats;
-  progress.stage(isoform_stage(ISOFORM_STAGE_REDUCE));
+  progress.stage(ISOFORM_STAGE_REDUCE);
   return reduce::build_work_mesh(*source, curvature, stars, on_boundary);
 }
 
