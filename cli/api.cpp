@@ -10,9 +10,18 @@ void check(isoform_status status) {
   }
 }
 
+namespace {
+int volume_index = -1;  // --volume, for every volume file the command opens
+}  // namespace
+
+void set_volume_index(int index) { volume_index = index; }
+
 VolumePtr open_volume(const std::string& path) {
+  isoform_open_options options;
+  isoform_open_options_default(&options);
+  options.volume = volume_index;
   isoform_volume* volume = nullptr;
-  check(isoform_volume_open(path.c_str(), &volume));
+  check(isoform_volume_open_with(path.c_str(), &options, &volume));
   return VolumePtr(volume);
 }
 

@@ -46,6 +46,9 @@ using MeshPtr = std::unique_ptr<isoform_mesh, MeshDeleter>;
 
 // Thin throwing forms of the C API calls that several commands make.
 VolumePtr open_volume(const std::string& path);
+// The volume of a 4-D file that open_volume reads (--volume); -1, the
+// default, refuses 4-D files.
+void set_volume_index(int index);
 isoform_grid_info grid_info(const isoform_volume* volume, int index);
 // The index of grid `name` ("" = the first scalar grid).
 int find_grid(const isoform_volume* volume, const std::string& name);

@@ -85,7 +85,7 @@ Command add_boxes_command(CLI::App& parent) {
       "centre + (u cos v, u sin v cos w, u sin v sin w), by default u 0..1, v 0..pi, w 0..3pi/2 "
       "(Figure 2.4). PLY vertices carry red green blue alpha; the face property part is the "
       "subvolume. Example: isoform boxes gaussians.vdb --q 5,5,5 --gap 1 -o boxes.ply");
-  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr, .nii, .nii.gz)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply (with colours) or .obj")->required();
   app->add_option("--grid", args->grid, "Grid to show (default: the first scalar grid)");
   app->add_option("--q", args->q, "Subvolumes per axis QX,QY,QZ or Q (default 5)");

@@ -170,7 +170,7 @@ Command add_compare_command(CLI::App& parent) {
       "Example: isoform compare reduced.ply --reference head.vdb --iso 0.5 -o study/");
   app->add_option("file", a->input, "Base mesh (.ply, .obj, .stl)")->required();
   app->add_option("-o,--output", a->output, "Folder for the study (created)")->required();
-  app->add_option("--reference", a->reference, "sphere, torus, or a volume file (.vdb, .nrrd)");
+  app->add_option("--reference", a->reference, "sphere, torus, or a volume file (.vdb, .nrrd, .nii)");
   app->add_option("--grid", a->grid, "Grid of the reference volume (default: the first scalar grid)");
   app->add_option("--iso", a->iso, "Isovalue of the reference volume (default: 0 for level sets, else mid-range)")
       ->each([a](const std::string&) { a->has_iso = true; });

@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "contouring.h"
 #include "curvature_step.h"
+#include "part_step.h"
 #include "paths.h"
 #include "reduce_step.h"
 #include "report.h"
@@ -25,6 +26,8 @@ struct ContourArgs {
   std::string reduce;  // the share to remove (90% or 0.9), when reduce_given
   bool reduce_given = false;
   double reduce_seconds = 0.0;
+  PartSettings parts;
+  isoform_part_filter_stats dropped{};
   bool json = false;
 };
 
@@ -36,9 +39,12 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
                         {"class", class_name(info.grid_class)},
                         {"method", args.settings.method},
                         {"output", args.output},
+                        {"space", info.space[0] ? Json(std::string(info.space)) : Json()},
+                        {"unit", info.unit[0] ? Json(std::string(info.unit)) : Json()},
                         {"contour_seconds", result.seconds},
                         {"write_seconds", write_seconds}};
     j.update(mesh_json(result.stats));
+    if (args.parts.wanted()) j.update(parts_json(args.dropped));
     if (args.curvature) j["curvature"] = curvature_json(result.mesh.get());
     if (args.reduce_given) j["reduce"] = reduce_json(result.mesh.get(), args.reduce_seconds);
     print_json(j);
@@ -46,7 +52,9 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
   }
   std::cout << args.input << ", grid '" << info.name << "' (" << class_name(info.grid_class)
             << "), method " << args.settings.method << '\n';
+  print_row(std::cout, "world frame", frame_text(info));
   print_mesh(std::cout, result.stats);
+  if (args.parts.wanted()) print_parts(std::cout, args.dropped);
   if (args.curvature) print_curvature(std::cout, result.mesh.get());
   if (args.reduce_given) print_reduce(std::cout, result.mesh.get(), args.reduce_seconds);
   print_row(std::cout, "time", format_seconds(result.seconds));
@@ -78,13 +86,19 @@ void run_contour(ContourArgs& args) {
     check_output_path(args.input, args.output, {".ply", ".obj", ".stl"});
   const VolumePtr volume = open_volume(args.input);
   const int grid = find_grid(volume.get(), args.grid);
+  const isoform_grid_info info = grid_info(volume.get(), grid);
+  const isoform_part_filter filter = part_filter(args.parts, info.unit, args.input);  // fail before the contour
   ContourResult result = contour_grid(args.input, volume.get(), grid, args.settings);
+  if (args.parts.wanted()) {
+    args.dropped = drop_parts(result.mesh.get(), filter);
+    result.stats = mesh_stats(result.mesh.get());
+  }
   if (args.curvature)
     compute_curvature(result.mesh.get(), args.curvature_settings, args.settings.threads, args.settings.progress);
   reduce_contour(args, result.mesh.get());
   if (args.reduce_given) result.stats = mesh_stats(result.mesh.get());
   const double write_seconds = save_mesh(result.mesh.get(), args.output);
-  report_contour(args, grid_info(volume.get(), grid), result, write_seconds);
+  report_contour(args, info, result, write_seconds);
 }
 
 }  // namespace
@@ -98,7 +112,7 @@ Command add_contour_command(CLI::App& parent) {
       "unit normal per vertex (PLY and OBJ) and a part id per triangle (PLY). Without --iso, a "
       "grid that is not a level set is contoured at the midpoint of its value range, and a note "
       "on stderr says so. Example: isoform contour scan.vdb --iso 500 -o skin.ply");
-  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr, .nii, .nii.gz)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")
       ->required();
   app->add_option("--grid", args->grid, "Grid to contour (default: the first scalar grid)");
@@ -113,6 +127,7 @@ Command add_contour_command(CLI::App& parent) {
       "--reduce", args->reduce,
       "Then remove this share of the triangles (Chapter 5, as `isoform reduce`): 90% or 0.9; 0% only checks "
       "the mesh as the reduction would");
+  add_part_options(*app, args->parts);
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args, reduce] {
             args->reduce_given = reduce->count() > 0;

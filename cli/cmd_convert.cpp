@@ -137,12 +137,12 @@ Command add_convert_command(CLI::App& parent) {
   auto args = std::make_shared<ConvertArgs>();
   set_raw_defaults(*args);
   CLI::App* app = parent.add_subcommand(
-      "convert", "Convert a dense scan (.raw, .nrrd, .nhdr) or a .vdb into a sparse .vdb");
+      "convert", "Convert a dense scan (.raw, .nrrd, .nhdr, .nii, .nii.gz) or a .vdb into a sparse .vdb");
   app->footer(
       "A headerless .raw file needs --dims; the other raw options describe its layout. "
       "Example: isoform convert head.raw --dims 64,64,93 --type u16 --spacing 3.2,3.2,1.5 "
       "-o head.vdb");
-  app->add_option("file", args->input, "Input volume: .raw (with --dims), .nrrd, .nhdr, .vdb")
+  app->add_option("file", args->input, "Input volume: .raw (with --dims), .nrrd, .nhdr, .nii, .nii.gz, .vdb")
       ->required();
   app->add_option("-o,--output", args->output, "OpenVDB file to write (.vdb)")->required();
   add_raw_options(*app, *args);

@@ -97,7 +97,7 @@ Command add_curvature_volume_command(CLI::App& parent) {
       "method fits a degree-6 polynomial to f on a 7x7x7 box of active voxels (moved inward at "
       "the data's edge); --method seed uses the seed's 14-point platelet fit. The summary counts "
       "the points that needed a fallback fit. Example: isoform curvature-volume smoke.vdb -o curv.vdb");
-  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr, .nii, .nii.gz)")->required();
   app->add_option("-o,--output", args->output, "OpenVDB file to write (.vdb); never the input")->required();
   app->add_option("--grid", args->grid, "Grid to use (default: the first scalar grid)");
   app->add_option("--method", args->method, "default or seed (default: default)")

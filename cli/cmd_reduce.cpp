@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "contouring.h"
+#include "part_step.h"
 #include "paths.h"
 #include "reduce_step.h"
 
@@ -18,6 +19,7 @@ struct ReduceArgs {
   std::string input, output, keep = "10%";
   ReduceSettings settings;
   ProgressOptions progress;
+  PartSettings parts;
   bool json = false;
 };
 
@@ -28,6 +30,8 @@ void run_reduce(ReduceArgs& args) {
   check(isoform_mesh_load(args.input.c_str(), &raw));
   const MeshPtr mesh(raw);
   if (isoform_mesh_triangle_count(mesh.get()) == 0) throw Failure(args.input + ": the mesh has no triangles");
+  isoform_part_filter_stats dropped{};
+  if (args.parts.wanted()) dropped = drop_parts(mesh.get(), part_filter(args.parts, "", args.input));
   const double seconds = reduce_mesh(mesh.get(), args.settings, args.input, args.progress);
   const double write_seconds = save_mesh(mesh.get(), args.output);
   if (args.json) {
@@ -35,11 +39,13 @@ void run_reduce(ReduceArgs& args) {
     j.update(reduce_json(mesh.get(), seconds));
     if (args.settings.graph) j["graph_rms"] = graph_rms(mesh.get());
     j["parts"] = isoform_mesh_part_count(mesh.get());
+    if (args.parts.wanted()) j.update(parts_json(dropped));
     j["write_seconds"] = write_seconds;
     print_json(j);
     return;
   }
   std::cout << args.input << ": reduced with the " << args.settings.point << " point\n";
+  if (args.parts.wanted()) print_parts(std::cout, dropped);
   print_reduce(std::cout, mesh.get(), seconds);
   if (args.settings.graph) print_row(std::cout, "RMS height error", format_number(graph_rms(mesh.get())));
   std::cout << "wrote " << args.output << '\n';
@@ -62,6 +68,7 @@ Command add_reduce_command(CLI::App& parent) {
   app->add_option("file", args->input, "Mesh file (.ply, .obj, .stl)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply, .obj or .stl")->required();
   app->add_option("--keep", args->keep, "Triangles to keep: a percentage (10%) or a fraction (0.1); default 10%");
+  add_part_options(*app, args->parts);
   app->add_option("--tolerance", args->settings.tolerance,
                   "Largest distance, in world units, of an original vertex from the reduced surface and of "
                   "a new point from the original (default 0: off)")

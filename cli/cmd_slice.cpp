@@ -158,7 +158,7 @@ Command add_slice_command(CLI::App& parent) {
       "missing. --at is normalised: 0..1 across the grid's active bounding box per axis; with "
       "--world it is in world units. Axes left out stay in the middle. Example: isoform slice "
       "smoke.vdb --at x=0.3,y=0.5,z=0.7 --res 256 --map viridis -o slices/");
-  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr, .nii, .nii.gz)")->required();
   app->add_option("-o,--output", args->output, "Folder to write the images and meshes into")->required();
   app->add_option("--grid", args->grid, "Grid to slice (default: the first scalar grid)");
   app->add_option("--at", args->at, "Plane positions: x=C1,y=C2,z=C3 (or C1,C2,C3); default the middle");

@@ -70,7 +70,7 @@ Command add_stack_command(CLI::App& parent) {
       "and are written back to front along --view (the direction from the eye into the scene), "
       "by the depth of each rectangle's corner nearest the eye. Example: isoform stack smoke.vdb "
       "--n 8 --t 0.5 --view -1,-1,-1 -o stack.ply");
-  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr)")->required();
+  app->add_option("file", args->input, "Volume file (.vdb, .nrrd, .nhdr, .nii, .nii.gz)")->required();
   app->add_option("-o,--output", args->output, "Mesh file to write: .ply (with colours and alpha) or .obj")
       ->required();
   app->add_option("--grid", args->grid, "Grid to show (default: the first scalar grid)");

@@ -62,6 +62,10 @@ int main(int argc, char** argv) {
   app.add_option("--memory", memory,
                  "most memory an input file's data may take once read, such as 2G (default: half "
                  "the machine's memory); a file that needs more is refused before it is read");
+  int volume = -1;
+  app.add_option("--volume", volume,
+                 "the volume K (from 0) of a 4-D NIfTI file to read; 4-D files are refused without it")
+      ->check(CLI::NonNegativeNumber);
   const std::vector<Command> commands = {
       isoform::cli::add_info_command(app), isoform::cli::add_contour_command(app),
       isoform::cli::add_convert_command(app), isoform::cli::add_pipeline_command(app),
@@ -78,6 +82,7 @@ int main(int argc, char** argv) {
     // app.exit prints help or version (code 0) or the usage error.
     return app.exit(error) == 0 ? 0 : kUsageExitCode;
   }
+  isoform::cli::set_volume_index(volume);
   if (!memory.empty()) {
     try {
       isoform_set_memory_budget(isoform::cli::parse_byte_size(memory));

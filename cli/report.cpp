@@ -81,7 +81,15 @@ Json grid_json(const isoform_grid_info& info) {
           {"bbox_min", triple(info.bbox_min)},
           {"bbox_max", triple(info.bbox_max)},
           {"voxel_size", triple(info.voxel_size)},
-          {"transform", transform}};
+          {"transform", transform},
+          {"space", info.space[0] ? Json(std::string(info.space)) : Json()},
+          {"unit", info.unit[0] ? Json(std::string(info.unit)) : Json()}};
+}
+
+std::string frame_text(const isoform_grid_info& info) {
+  const std::string space = info.space[0] ? std::string(info.space) : "not stated";
+  const std::string unit = info.unit[0] ? std::string(info.unit) : "not stated";
+  return space + ", unit " + unit;
 }
 
 void print_grid(std::ostream& out, int index, const isoform_grid_info& info) {
@@ -95,6 +103,7 @@ void print_grid(std::ostream& out, int index, const isoform_grid_info& info) {
   print_row(out, "  index bbox",
             "[" + format_triple(info.bbox_min, ", ") + "] .. [" + format_triple(info.bbox_max, ", ") + "]");
   print_row(out, "  voxel size", format_triple(info.voxel_size, " x "));
+  print_row(out, "  world frame", frame_text(info));
   print_transform(out, info.transform);
 }
 

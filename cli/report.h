@@ -18,6 +18,8 @@ using Json = nlohmann::ordered_json;
 std::string class_name(int grid_class);
 // A number as a person reads it: shortest of fixed or exponent, 6 digits.
 std::string format_number(double value);
+// "RAS, unit mm", or "not stated" for what the file does not say.
+std::string frame_text(const isoform_grid_info& info);
 // Seconds with two decimals and the unit: "1.25 s".
 std::string format_seconds(double seconds);
 

@@ -21,14 +21,16 @@ std::string as_file(const uint8_t* data, size_t size, const char* extension);
 // active voxels on one thread, freeing all it made.
 void exercise_volume(isoform_volume* volume);
 
-// Curvature, a reduction to half and a level-2 side-vertex surface of a
-// mesh of at most 4,096 triangles, each on what the step before left.
+// Curvature, the parts of one triangle (or of almost no volume) dropped, a
+// reduction to half and a level-2 side-vertex surface of a mesh of at most
+// 4,096 triangles, each on what the step before left.
 void exercise_mesh(isoform_mesh* mesh);
 
-// One fuzz input as a volume file (isoform_volume_open) or a mesh file
-// (isoform_mesh_load) of the given extension, exercised as above when the
-// reader accepts it.
-void fuzz_volume_file(const uint8_t* data, size_t size, const char* extension);
+// One fuzz input as a volume file (isoform_volume_open_with; options NULL
+// for the defaults) or a mesh file (isoform_mesh_load) of the given
+// extension, exercised as above when the reader accepts it.
+void fuzz_volume_file(const uint8_t* data, size_t size, const char* extension,
+                      const isoform_open_options* options = nullptr);
 void fuzz_mesh_file(const uint8_t* data, size_t size, const char* extension);
 
 }  // namespace isoform::fuzz

@@ -1,6 +1,7 @@
 // Writes the fuzzers' seed corpora, one folder per target under the folder
 // given: VDBs of every value type, map and compression (the tests' samples),
-// NRRDs of every encoding written by Teem, raw scans with their layout
+// NRRDs of every encoding written by Teem, NIfTI-1 and -2 files of every
+// datatype, byte order and world map (plain and gzip), raw scans with their layout
 // bytes, and meshes in every format and flavour the readers take.
 //
 // usage: isoform_fuzz_corpus DIR
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../tests/vdbio/nifti_samples.h"
 #include "../tests/vdbio/vdb_samples.h"
 #include "isoform.h"
 
@@ -71,6 +73,34 @@ void nrrd_seeds(const fs::path& dir) {
 }
 
 // The raw target reads 12 layout bytes, then the file.
+void nifti_seeds(const fs::path& dir) {
+  using isoform::vdbio::test::NiftiSample;
+  int n = 0;
+  for (int version : {1, 2})
+    for (int datatype : {2, 4, 16, 64, 512})
+      for (int world = 0; world < 3; ++world) {
+        NiftiSample s;
+        s.version = version;
+        s.big_endian = datatype == 4;
+        s.datatype = datatype;
+        s.dim[0] = world == 2 ? 4 : 3;
+        s.dim[1] = 6, s.dim[2] = 5, s.dim[3] = 4, s.dim[4] = world == 2 ? 2 : 1;
+        s.pixdim[0] = -1, s.pixdim[1] = 0.5, s.pixdim[2] = 0.75, s.pixdim[3] = 2;
+        s.qform_code = world == 1;
+        s.quatern[0] = 0.2, s.quatern[1] = -0.1, s.quatern[2] = 0.3;
+        s.sform_code = world == 0;
+        s.scl_slope = datatype == 4 ? 2 : 0, s.scl_inter = -10;
+        const size_t count = size_t(6 * 5 * 4 * s.dim[4]);
+        for (size_t i = 0; i < count; ++i) {
+          const double x = double(i % 6) - 2.5, y = double(i / 6 % 5) - 2, z = double(i / 30 % 4) - 1.5;
+          s.samples.push_back(100 - 10 * (x * x + y * y + z * z));
+        }
+        const std::string bytes = isoform::vdbio::test::nifti_bytes(s);
+        const bool gzip = n % 2 == 1;
+        isoform::vdbio::test::write_file((dir / ("seed" + std::to_string(n++) + ".nii")).string(), bytes, gzip);
+      }
+}
+
 void raw_seeds(const fs::path& dir) {
   const struct {
     uint8_t dims[3], type, big_endian, header;
@@ -161,9 +191,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path root = argv[1];
-  for (const char* target : {"vdb", "nrrd", "raw", "ply", "obj", "stl"}) fs::create_directories(root / target);
+  for (const char* target : {"vdb", "nrrd", "nifti", "raw", "ply", "obj", "stl"})
+    fs::create_directories(root / target);
   vdb_seeds(root / "vdb");
   nrrd_seeds(root / "nrrd");
+  nifti_seeds(root / "nifti");
   raw_seeds(root / "raw");
   mesh_seeds(root / "ply", root / "obj", root / "stl");
   return 0;

@@ -5,7 +5,7 @@
 # finds in build-fuzz/corpus/<target> for the next run.
 #
 # usage: fuzz/run.sh [SECONDS_PER_TARGET] [TARGET ...]
-#   default: 600 seconds, every target (vdb nrrd raw ply obj stl);
+#   default: 600 seconds, every target (vdb nrrd nifti raw ply obj stl);
 #   FUZZ_JOBS=N runs N jobs at once (default: one per core)
 #
 # Limits per input, as docs/hostile-files.md states them for hostile files:
@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(vdb nrrd raw ply obj stl)
+[ ${#targets[@]} -gt 0 ] || targets=(vdb nrrd nifti raw ply obj stl)
 
 if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
   apt-get install -y clang libclang-rt-14-dev
@@ -28,8 +28,9 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo 
   -DISOFORM_BUILD_TESTS=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target isoform_fuzz_corpus "${targets[@]/#/fuzz_}"
 
-seeds=build-fuzz/seeds
-rm -rf "$seeds"
+# This run's own seeds (several runs may go at once), removed at its end.
+seeds=build-fuzz/seeds-$$
+trap 'rm -rf "$seeds"' EXIT
 build-fuzz/fuzz/isoform_fuzz_corpus "$seeds"
 
 jobs=${FUZZ_JOBS:-$(nproc)}

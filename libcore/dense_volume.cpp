@@ -85,7 +85,14 @@ GridFacts DenseVolume::facts(int i) const {
   f.bbox_min = {0, 0, 0};
   f.bbox_max = {dims_[0] - 1, dims_[1] - 1, dims_[2] - 1};
   f.index_to_world = grid_->index_to_world;
+  f.space = space_;
+  f.unit = unit_;
   return f;
+}
+
+void DenseVolume::set_frame(std::string space, std::string unit) {
+  space_ = std::move(space);
+  unit_ = std::move(unit);
 }
 
 std::shared_ptr<const ScalarGrid> DenseVolume::load(int i) const {

@@ -35,7 +35,7 @@ extern "C" {
 #endif
 
 /* Version: major * 10000 + minor * 100 + patch. */
-#define ISOFORM_VERSION 200
+#define ISOFORM_VERSION 300
 
 /* Returns ISOFORM_VERSION of the library actually loaded. */
 ISOFORM_API int isoform_version(void);
@@ -113,12 +113,34 @@ typedef struct isoform_grid_info {
   int bbox_min[3], bbox_max[3]; /* inclusive index bounding box of active values */
   double voxel_size[3];      /* world units per voxel along i, j, k */
   double transform[16];
+  char space[8];  /* the patient frame world coordinates are in, by where +x,
+                     +y, +z point: "RAS" (NIfTI), "LPS" (DICOM), "LAS"; ""
+                     when the file does not say (OpenVDB, raw) */
+  char unit[8];   /* world unit: "mm", "m", "um"; "" when the file does not say */
 } isoform_grid_info;
 
-/* Opens a volume file: OpenVDB (.vdb) or NRRD (.nrrd, .nhdr; raw or gzip
- * encoding). Grid metadata is read at once; voxel data when a grid is first
- * used. Errors name the file: missing, not a VDB, truncated, and so on. */
+/* Opens a volume file: OpenVDB (.vdb), NRRD (.nrrd, .nhdr; raw or gzip
+ * encoding) or NIfTI-1/NIfTI-2 (.nii, .nii.gz, .hdr with its .img). The
+ * extension decides; other names are recognised by their first bytes. Grid
+ * metadata is read at once; voxel data when a grid is first used (dense
+ * scans: at once). Errors name the file: missing, not a VDB, truncated, and
+ * so on. Same as isoform_volume_open_with and default options. */
 ISOFORM_API isoform_status isoform_volume_open(const char* path, isoform_volume** out);
+
+/* Choices for opening a volume file. Growable: later versions add fields at
+ * the end, and struct_size tells the library which ones the caller knows. */
+typedef struct isoform_open_options {
+  size_t struct_size; /* sizeof(isoform_open_options); set by _default() */
+  int volume;         /* the 0-based volume of a 4-D NIfTI; -1 (default)
+                         opens 3-D files only and refuses 4-D ones */
+} isoform_open_options;
+
+ISOFORM_API void isoform_open_options_default(isoform_open_options* options);
+
+/* isoform_volume_open with choices; options NULL means the defaults. */
+ISOFORM_API isoform_status isoform_volume_open_with(const char* path,
+                                                    const isoform_open_options* options,
+                                                    isoform_volume** out);
 
 /* The most memory one input file's data may take once decoded, in bytes.
  * Every reader checks a file's sizes against it before allocating anything
@@ -252,6 +274,32 @@ ISOFORM_API isoform_status isoform_mesh_stats_get(const isoform_mesh* mesh, isof
 ISOFORM_API size_t isoform_mesh_vertex_count(const isoform_mesh* mesh);
 ISOFORM_API size_t isoform_mesh_triangle_count(const isoform_mesh* mesh);
 ISOFORM_API size_t isoform_mesh_part_count(const isoform_mesh* mesh);
+
+/* Which parts of a mesh to keep: a noisy scan's contour comes with
+ * thousands of specks. Growable like isoform_open_options. A part is kept
+ * when it passes every test set. */
+typedef struct isoform_part_filter {
+  size_t struct_size;       /* sizeof(isoform_part_filter); set by _default() */
+  long long min_triangles;  /* drop parts of fewer triangles; 0 (default) keeps all */
+  double min_volume;        /* drop closed parts that enclose less, in world units
+                               cubed; parts with a boundary pass; 0 keeps all */
+  long long largest;        /* keep only the K parts of most triangles; 0 keeps all */
+} isoform_part_filter;
+
+typedef struct isoform_part_filter_stats {
+  long long parts_before, parts_after;
+  long long triangles_before, triangles_after;
+} isoform_part_filter_stats;
+
+ISOFORM_API void isoform_part_filter_default(isoform_part_filter* filter);
+
+/* Removes the parts the filter drops, with the vertices only they used; the
+ * other vertices keep their normals, colours and curvature. Neighbours, parts
+ * (renumbered, 0 the largest) and statistics are computed again. stats may
+ * be NULL. */
+ISOFORM_API isoform_status isoform_mesh_filter_parts(isoform_mesh* mesh,
+                                                     const isoform_part_filter* filter,
+                                                     isoform_part_filter_stats* stats);
 
 /* Copy-out calls. out must hold 3 * vertex_count floats (points, normals),
  * 3 * triangle_count int32 (triangles: vertex indices, counter-clockwise seen

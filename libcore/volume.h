@@ -112,6 +112,13 @@ struct GridFacts {
   long long active_voxels = 0;
   Index3 bbox_min{0, 0, 0}, bbox_max{-1, -1, -1};
   Affine index_to_world;
+  // The patient frame the transform maps into, as the file states it, named
+  // by where +x, +y, +z point: "RAS" (right, anterior, superior: NIfTI's),
+  // "LPS" (left, posterior, superior: DICOM's), "LAS", or "" when the file
+  // does not say.
+  std::string space;
+  // The world unit: "mm", "m", "um", or "" when the file does not say.
+  std::string unit;
 };
 
 // A source of grids: an OpenVDB file (vdbio), a dense array, a phantom.
@@ -154,9 +161,12 @@ class DenseVolume : public VolumeFile {
   int grid_count() const override { return 1; }
   GridFacts facts(int i) const override;
   std::shared_ptr<const ScalarGrid> load(int i) const override;
+  // The world frame and unit the file states (GridFacts::space, ::unit).
+  void set_frame(std::string space, std::string unit);
 
  private:
   std::string path_;
+  std::string space_, unit_;
   std::shared_ptr<ScalarGrid> grid_;
   Index3 dims_;
   long long active_ = 0;

@@ -1,8 +1,10 @@
-// The C API's entry points that need vdbio: opening OpenVDB, NRRD and raw
-// files as volumes, and saving a volume as OpenVDB. Each body runs inside
+// The C API's entry points that need vdbio: opening OpenVDB, NRRD, NIfTI
+// and raw files as volumes, and saving a volume as OpenVDB. Each body runs inside
 // isoform::capi::guarded, which turns exceptions into a status and message.
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -11,6 +13,7 @@
 #include "input_file.h"
 #include "libcore/capi/handles.h"
 #include "libcore/errors.h"
+#include "nifti_read.h"
 #include "vdb_file.h"
 #include "vdb_layout.h"
 #include "vdb_write.h"
@@ -36,16 +39,33 @@ std::string lower_extension(const std::string& path) {
 }
 
 // The extension decides; for any other extension the content does.
-std::shared_ptr<isoform::VolumeFile> open_by_format(const std::string& path) {
+std::shared_ptr<isoform::VolumeFile> open_by_format(const std::string& path,
+                                                    const isoform_open_options& options) {
   namespace vdbio = isoform::vdbio;
   const std::string ext = lower_extension(path);
   if (ext == ".vdb") return vdbio::open_vdb(path);
   if (ext == ".nrrd" || ext == ".nhdr") return vdbio::read_nrrd(path);
+  if (vdbio::has_nifti_name(path)) return vdbio::read_nifti(path, options.volume);
   if (vdbio::has_nrrd_magic(path)) return vdbio::read_nrrd(path);
   if (vdbio::has_vdb_magic(path)) return vdbio::open_vdb(path);
+  if (vdbio::has_nifti_magic(path)) return vdbio::read_nifti(path, options.volume);
   throw isoform::FormatError(path +
-                             ": not an OpenVDB or NRRD file (headerless raw scans open with "
-                             "isoform_volume_open_raw)");
+                             ": not an OpenVDB, NRRD or NIfTI file (headerless raw scans open "
+                             "with isoform_volume_open_raw)");
+}
+
+// The caller's options, up to the fields its struct_size covers; the
+// defaults for the rest.
+isoform_open_options known_options(const isoform_open_options* given) {
+  isoform_open_options options;
+  isoform_open_options_default(&options);
+  if (!given) return options;
+  require(given->struct_size >= offsetof(isoform_open_options, volume) + sizeof(int),
+          "isoform_volume_open_with: options.struct_size is not set (call isoform_open_options_default)");
+  std::memcpy(&options, given, std::min(given->struct_size, sizeof options));
+  options.struct_size = sizeof options;
+  require(options.volume >= -1, "isoform_volume_open_with: options.volume must be -1 or a volume index");
+  return options;
 }
 
 isoform::vdbio::RawLayout layout_of(const isoform_raw_options& options) {
@@ -75,11 +95,23 @@ isoform_status hand_out(std::shared_ptr<isoform::VolumeFile> file, isoform_volum
 }  // namespace
 
 isoform_status isoform_volume_open(const char* path, isoform_volume** out) {
+  return isoform_volume_open_with(path, nullptr, out);
+}
+
+void isoform_open_options_default(isoform_open_options* options) {
+  if (!options) return;
+  *options = isoform_open_options{};
+  options->struct_size = sizeof *options;
+  options->volume = -1;
+}
+
+isoform_status isoform_volume_open_with(const char* path, const isoform_open_options* options,
+                                        isoform_volume** out) {
   return isoform::capi::guarded([&] {
     require(out != nullptr, "isoform_volume_open: out is NULL");
     *out = nullptr;
     require(path != nullptr, "isoform_volume_open: path is NULL");
-    return hand_out(open_by_format(path), out);
+    return hand_out(open_by_format(path, known_options(options)), out);
   });
 }
 

@@ -26,6 +26,8 @@ std::string dims_text(const Index3& dims) {
   return std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
 }
 
+}  // namespace
+
 size_t sample_bytes(ScalarType type) {
   switch (type) {
     case ScalarType::U8:
@@ -39,10 +41,14 @@ size_t sample_bytes(ScalarType type) {
     case ScalarType::F32:
       return 4;
     case ScalarType::F64:
+    case ScalarType::I64:
+    case ScalarType::U64:
       return 8;
   }
   throw InvalidArgument("unknown scalar type " + std::to_string(int(type)));
 }
+
+namespace {
 
 void check_layout(const std::string& path, const RawLayout& layout) {
   if (layout.dims[0] < 1 || layout.dims[1] < 1 || layout.dims[2] < 1)
@@ -78,41 +84,6 @@ void decode(const unsigned char* bytes, size_t count, bool swap, float* out) {
     std::memcpy(&v, sample, sizeof(T));
     out[i] = float(v);
   }
-}
-
-std::vector<float> decode_samples(const std::vector<unsigned char>& bytes, size_t count,
-                                  const RawLayout& layout) {
-  constexpr bool host_big = __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__;
-  const bool swap = layout.big_endian != host_big;
-  std::vector<float> out(count);
-  const unsigned char* in = bytes.data();
-  switch (layout.type) {
-    case ScalarType::U8:
-      decode<std::uint8_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::I8:
-      decode<std::int8_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::U16:
-      decode<std::uint16_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::I16:
-      decode<std::int16_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::U32:
-      decode<std::uint32_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::I32:
-      decode<std::int32_t>(in, count, swap, out.data());
-      break;
-    case ScalarType::F32:
-      decode<float>(in, count, swap, out.data());
-      break;
-    case ScalarType::F64:
-      decode<double>(in, count, swap, out.data());
-      break;
-  }
-  return out;
 }
 
 struct NrrdNuke {
@@ -190,12 +161,78 @@ Affine nrrd_transform(const Nrrd& nrrd, const std::string& path) {
   return affine;
 }
 
+// The patient frame and the unit a NRRD's space fields state ("" where not).
+std::string nrrd_space(const Nrrd& nrrd) {
+  switch (nrrd.space) {
+    case nrrdSpaceRightAnteriorSuperior:
+      return "RAS";
+    case nrrdSpaceLeftAnteriorSuperior:
+      return "LAS";
+    case nrrdSpaceLeftPosteriorSuperior:
+    case nrrdSpaceScannerXYZ:  // Teem's synonym of LPS
+      return "LPS";
+    default:
+      return "";
+  }
+}
+
+std::string nrrd_unit(const Nrrd& nrrd) {
+  if (nrrd.spaceDim != 3 || !nrrd.spaceUnits[0]) return "";
+  const std::string unit = nrrd.spaceUnits[0];
+  for (int a = 1; a < 3; ++a)
+    if (!nrrd.spaceUnits[a] || unit != nrrd.spaceUnits[a]) return "";
+  if (unit == "mm" || unit == "m" || unit == "um") return unit;
+  if (unit == "millimeter" || unit == "millimeters") return "mm";
+  return "";
+}
+
 }  // namespace
 
 const char* scalar_type_name(ScalarType type) {
-  static const char* const names[] = {"u8", "i8", "u16", "i16", "u32", "i32", "f32", "f64"};
+  static const char* const names[] = {"u8", "i8", "u16", "i16", "u32", "i32", "f32", "f64", "i64", "u64"};
   return names[int(type)];
 }
+
+std::vector<float> decode_samples(const unsigned char* in, size_t count, ScalarType type,
+                                  bool big_endian) {
+  constexpr bool host_big = __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__;
+  const bool swap = big_endian != host_big;
+  std::vector<float> out(count);
+  switch (type) {
+    case ScalarType::U8:
+      decode<std::uint8_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::I8:
+      decode<std::int8_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::U16:
+      decode<std::uint16_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::I16:
+      decode<std::int16_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::U32:
+      decode<std::uint32_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::I32:
+      decode<std::int32_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::F32:
+      decode<float>(in, count, swap, out.data());
+      break;
+    case ScalarType::F64:
+      decode<double>(in, count, swap, out.data());
+      break;
+    case ScalarType::I64:
+      decode<std::int64_t>(in, count, swap, out.data());
+      break;
+    case ScalarType::U64:
+      decode<std::uint64_t>(in, count, swap, out.data());
+      break;
+  }
+  return out;
+}
+
 
 std::shared_ptr<DenseVolume> read_raw(const std::string& path, const RawLayout& layout) {
   check_layout(path, layout);
@@ -219,7 +256,7 @@ std::shared_ptr<DenseVolume> read_raw(const std::string& path, const RawLayout& 
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
   if (!in) throw IoError(path + ": read failed");
   return std::make_shared<DenseVolume>(
-      "density", GridClass::Fog, decode_samples(bytes, count, layout), layout.dims,
+      "density", GridClass::Fog, decode_samples(bytes.data(), count, layout.type, layout.big_endian), layout.dims,
       Affine::scale_translate(layout.spacing, layout.origin), path);
 }
 
@@ -230,6 +267,7 @@ std::shared_ptr<DenseVolume> load_nrrd(const std::string& path) {
   Index3 dims;
   Affine affine;
   std::vector<float> values;
+  std::string space, unit;
   {
     std::lock_guard<std::mutex> lock(teem_mutex());
     NrrdPtr nrrd(nrrdNew());
@@ -237,6 +275,8 @@ std::shared_ptr<DenseVolume> load_nrrd(const std::string& path) {
       throw FormatError(path + ": not a readable NRRD file (" + take_biff_message() + ")");
     check_scalar_3d(*nrrd, path);
     affine = nrrd_transform(*nrrd, path);
+    space = nrrd_space(*nrrd);
+    unit = nrrd_unit(*nrrd);
     for (int a = 0; a < 3; ++a) dims[a] = int(nrrd->axis[a].size);
     values.resize(size_t(dims[0]) * size_t(dims[1]) * size_t(dims[2]));
     // Teem's per-type lookup converts any sample type to float in place of
@@ -244,8 +284,9 @@ std::shared_ptr<DenseVolume> load_nrrd(const std::string& path) {
     float (*const lookup)(const void*, size_t) = nrrdFLookup[nrrd->type];
     for (size_t i = 0; i < values.size(); ++i) values[i] = lookup(nrrd->data, i);
   }
-  return std::make_shared<DenseVolume>("density", GridClass::Fog, std::move(values), dims, affine,
-                                       path);
+  auto volume = std::make_shared<DenseVolume>("density", GridClass::Fog, std::move(values), dims, affine, path);
+  volume->set_frame(space, unit);
+  return volume;
 }
 
 }  // namespace

@@ -5,15 +5,25 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "libcore/volume.h"
 
 namespace isoform::vdbio {
 
-enum class ScalarType { U8, I8, U16, I16, U32, I32, F32, F64 };
+// The first eight follow isoform_scalar_type; 64-bit integers come only
+// from files that say so (NIfTI).
+enum class ScalarType { U8, I8, U16, I16, U32, I32, F32, F64, I64, U64 };
 
 // "u8", "i8", "u16", ..., "f64", as messages name sample types.
 const char* scalar_type_name(ScalarType type);
+
+// Bytes of one sample.
+size_t sample_bytes(ScalarType type);
+
+// `count` samples of the type, in the given byte order, as floats.
+std::vector<float> decode_samples(const unsigned char* bytes, size_t count, ScalarType type,
+                                  bool big_endian);
 
 // How a headerless raw file holds its samples: x fastest, then y, then z.
 struct RawLayout {

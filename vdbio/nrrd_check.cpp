@@ -3,16 +3,13 @@
 // before it reads a byte of data, and follows any "data file" it names.
 #include "nrrd_check.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
-#include <vector>
 
+#include "gzip_inflate.h"
 #include "input_file.h"
 #include "libcore/errors.h"
 
@@ -23,7 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr size_t kMaxHeader = size_t(1) << 20;  // far beyond any real header
-constexpr uint64_t kDeflateRatio = 1032;        // deflate's largest expansion
 
 // Teem's type names (nrrdType), by the bytes of one sample; 0 for "block".
 uint64_t type_bytes(const std::string& type) {
@@ -104,42 +100,15 @@ uint64_t parse_count(const std::string& path, const std::string& field, const st
 
 // Teem's gzip reader leaks its stream when the data end early or do not
 // decode, so the data are inflated here first: they must give at least the
-// array's bytes (several gzip members after one another are read on, as
-// gzip itself reads them).
+// array's bytes, and no more is decoded than that, as Teem asks, so that
+// Teem meets a gzip trailer (and its check) exactly where this check does.
 void check_gzip_data(const std::string& path, const std::string& data, uint64_t start, uint64_t bytes) {
-  std::ifstream in(data, std::ios::binary);
-  in.seekg(std::streamoff(start));
-  z_stream z{};
-  if (inflateInit2(&z, 15 + 32) != Z_OK) throw FormatError(path + ": cannot start inflating its gzip data");
-  std::vector<unsigned char> packed(size_t(1) << 16), plain(size_t(1) << 18);
-  uint64_t got = 0;
-  int status = Z_OK;
-  while (got < bytes) {
-    if (z.avail_in == 0) {
-      in.read(reinterpret_cast<char*>(packed.data()), std::streamsize(packed.size()));
-      z.next_in = packed.data();
-      z.avail_in = uInt(in.gcount());
-      if (z.avail_in == 0) break;
-    }
-    // No more output than the sizes need, as Teem asks: its reader then
-    // meets a gzip trailer (and its check) exactly where this one does.
-    const uInt room = uInt(std::min<uint64_t>(plain.size(), bytes - got));
-    z.next_out = plain.data();
-    z.avail_out = room;
-    status = inflate(&z, Z_NO_FLUSH);
-    got += room - z.avail_out;
-    if (status == Z_STREAM_END) {
-      if (inflateReset(&z) != Z_OK) break;
-    } else if (status != Z_OK && status != Z_BUF_ERROR) {
-      break;
-    }
-  }
-  inflateEnd(&z);
-  const bool broken = status < 0 && status != Z_BUF_ERROR;
-  if (got < bytes)
-    throw FormatError(path + ": NRRD gzip data give " + std::to_string(got) + " of the " + std::to_string(bytes) +
-                      " bytes its sizes need" + (broken ? " (they do not decode)" : ""));
-  if (broken) throw FormatError(path + ": NRRD gzip data do not decode (a damaged stream or check sum)");
+  const Inflated inflated = inflate_gzip(data, start, 0, bytes, nullptr);
+  if (inflated.bytes < bytes)
+    throw FormatError(path + ": NRRD gzip data give " + std::to_string(inflated.bytes) + " of the " +
+                      std::to_string(bytes) + " bytes its sizes need" +
+                      (inflated.damaged ? " (they do not decode)" : ""));
+  if (inflated.damaged) throw FormatError(path + ": NRRD gzip data do not decode (a damaged stream or check sum)");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -106,6 +107,16 @@ void require_finite(const ValueScan& scan, double background, const std::string&
                       " background; isoform needs finite values");
 }
 
+// A frame or unit the grid's metadata names, if it is one isoform knows.
+std::string frame_metadata(const openvdb::GridBase& grid, const char* name,
+                           std::initializer_list<const char*> known) {
+  const auto value = grid.getMetadata<openvdb::StringMetadata>(name);
+  if (!value) return "";
+  for (const char* k : known)
+    if (value->value() == k) return k;
+  return "";
+}
+
 // Value range and background of a scalar grid, in its own value type.
 void add_scalar_facts(const openvdb::GridBase& grid, const std::string& what, GridFacts& facts) {
   grid.apply<ScalarGrids>([&](const auto& typed) {
@@ -174,6 +185,8 @@ GridFacts VdbFile::facts(int i) const {
     facts.bbox_max = {box.max().x(), box.max().y(), box.max().z()};
   }
   if (facts.is_scalar) add_scalar_facts(*grid, describe(i), facts);
+  facts.space = frame_metadata(*grid, kSpaceMetadata, {"RAS", "LPS", "LAS"});
+  facts.unit = frame_metadata(*grid, kUnitMetadata, {"mm", "m", "um"});
   std::lock_guard<std::mutex> lock(mutex_);
   facts_[size_t(i)] = facts;
   read_index_ = i;

@@ -23,6 +23,12 @@ class GridBase;
 
 namespace isoform::vdbio {
 
+// Grid metadata naming the patient frame and unit of a scan's world
+// coordinates (GridFacts::space, ::unit), written when a NIfTI or NRRD scan
+// is converted and read back, so that the .vdb says what the scan said.
+inline constexpr const char* kSpaceMetadata = "isoform_space";
+inline constexpr const char* kUnitMetadata = "isoform_unit";
+
 // Opening walks the file's header, grid table, metadata and transforms
 // (vdb_check.h) before OpenVDB reads every grid's metadata; each grid's tree
 // is walked before OpenVDB reads it; voxel data are read when a grid is described or loaded, each

@@ -71,8 +71,15 @@ openvdb::FloatGrid::Ptr grid_from_bricks(const ScalarGrid& source) {
 openvdb::GridCPtrVec grids_of(const VolumeFile& volume) {
   if (const auto* vdb = dynamic_cast<const VdbFile*>(&volume)) return grids_of_vdb(*vdb);
   openvdb::GridCPtrVec grids;
-  for (int i = 0; i < volume.grid_count(); ++i)
-    if (volume.facts(i).is_scalar) grids.push_back(grid_from_bricks(*volume.load(i)));
+  for (int i = 0; i < volume.grid_count(); ++i) {
+    const GridFacts facts = volume.facts(i);
+    if (!facts.is_scalar) continue;
+    openvdb::FloatGrid::Ptr grid = grid_from_bricks(*volume.load(i));
+    // The scan's frame and unit travel with the grid (vdb_file.h reads them).
+    if (!facts.space.empty()) grid->insertMeta(kSpaceMetadata, openvdb::StringMetadata(facts.space));
+    if (!facts.unit.empty()) grid->insertMeta(kUnitMetadata, openvdb::StringMetadata(facts.unit));
+    grids.push_back(grid);
+  }
   return grids;
 }
 

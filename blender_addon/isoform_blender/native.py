@@ -32,7 +32,7 @@ from .native_signatures import _f32, _f64, _i32, _u8
 
 # Must equal ISOFORM_VERSION of the isoform.h this module mirrors
 # (major * 10000 + minor * 100 + patch).
-ISOFORM_VERSION = 200
+ISOFORM_VERSION = 300
 LIBRARY_FILE = "libisoform.so"
 LIBRARY_ENV = "ISOFORM_LIBRARY"
 
@@ -250,8 +250,16 @@ class Volume(_Handle):
     _free_name = "volume_free"
 
     @classmethod
-    def open(cls, path):
-        return _make(cls, lambda lib, out: lib.volume_open(_path_bytes(path), out))
+    def open(cls, path, volume=None):
+        """Opens a .vdb, .nrrd/.nhdr or .nii/.nii.gz file; volume picks one
+        volume (from 0) of a 4-D NIfTI, which is refused without it."""
+        lib = library()
+        options = structs.OpenOptions()
+        lib.open_options_default(ctypes.byref(options))
+        if volume is not None:
+            options.volume = int(volume)
+        return _make(cls, lambda lib, out: lib.volume_open_with(
+            _path_bytes(path), ctypes.byref(options), out))
 
     @classmethod
     def phantom(cls, n=128):
@@ -343,6 +351,21 @@ class Mesh(_Handle):
     @classmethod
     def load(cls, path):
         return _make(cls, lambda lib, out: lib.mesh_load(_path_bytes(path), out))
+
+    def filter_parts(self, min_triangles=0, min_volume=0.0, largest=0):
+        """Drops the parts of fewer triangles, the closed parts enclosing less
+        than min_volume (world units cubed), or all but the largest; returns
+        what was dropped (parts_before, parts_after, triangles_before,
+        triangles_after)."""
+        options = structs.PartFilter()
+        self._lib.part_filter_default(ctypes.byref(options))
+        options.min_triangles = int(min_triangles)
+        options.min_volume = float(min_volume)
+        options.largest = int(largest)
+        stats = structs.PartFilterStats()
+        self._lib.check(self._lib.mesh_filter_parts(self.handle, ctypes.byref(options),
+                                                    ctypes.byref(stats)))
+        return _struct_namespace(stats)
 
     def save(self, path):
         self._lib.check(self._lib.mesh_save(self.handle, _path_bytes(path)))
@@ -456,8 +479,14 @@ class MeshArrays(SimpleNamespace):
                          stats=stats)
 
 
-def contour_file(path, grid="", isovalue=None, method="cells", progress=None):
-    """Opens a volume file and contours one grid: the operators' whole job."""
-    with Volume.open(path) as volume:
-        with volume.contour(grid, isovalue=isovalue, method=method, progress=progress) as mesh:
-            return mesh.arrays()
+def contour_file(path, grid="", isovalue=None, method="cells", progress=None, volume=None):
+    """Opens a volume file and contours one grid: the operators' whole job.
+    volume picks the volume of a 4-D NIfTI. The arrays also carry the grid's
+    world unit ("mm", "m", "um" or "") as unit."""
+    with Volume.open(path, volume=volume) as opened:
+        index = grid if isinstance(grid, int) else opened.find_grid(grid)
+        unit = opened.grid_info(index).unit
+        with opened.contour(index, isovalue=isovalue, method=method, progress=progress) as mesh:
+            arrays = mesh.arrays()
+    arrays.unit = unit
+    return arrays

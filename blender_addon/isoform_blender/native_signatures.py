@@ -19,6 +19,9 @@ SIGNATURES = {
     "isoform_last_error": (_str, []),
     "isoform_status_name": (_str, [_int]),  # status
     "isoform_volume_open": (_int, [_str, _handle_out]),  # path, out
+    "isoform_open_options_default": (None, [ctypes.POINTER(structs.OpenOptions)]),
+    # path, options, out
+    "isoform_volume_open_with": (_int, [_str, ctypes.POINTER(structs.OpenOptions), _handle_out]),
     # values, nx, ny, nz, spacing[3], origin[3], name, grid_class, out
     "isoform_volume_from_dense": (_int, [_f32, _int, _int, _int, _f64, _f64, _str, _int,
                                          _handle_out]),
@@ -34,6 +37,10 @@ SIGNATURES = {
     "isoform_contour": (_int, [_handle, _int, ctypes.POINTER(structs.ContourOptions),
                                ctypes.POINTER(structs.Progress), _handle_out]),
     "isoform_mesh_stats_get": (_int, [_handle, ctypes.POINTER(structs.MeshStats)]),  # mesh, out
+    "isoform_part_filter_default": (None, [ctypes.POINTER(structs.PartFilter)]),
+    # mesh, filter, stats
+    "isoform_mesh_filter_parts": (_int, [_handle, ctypes.POINTER(structs.PartFilter),
+                                         ctypes.POINTER(structs.PartFilterStats)]),
     "isoform_mesh_vertex_count": (_size, [_handle]),  # mesh
     "isoform_mesh_triangle_count": (_size, [_handle]),  # mesh
     "isoform_mesh_part_count": (_size, [_handle]),  # mesh

@@ -35,6 +35,16 @@ class GridInfo(ctypes.Structure):
         ("bbox_max", ctypes.c_int * 3),
         ("voxel_size", ctypes.c_double * 3),
         ("transform", ctypes.c_double * 16),  # row-major index -> world
+        ("space", ctypes.c_char * 8),         # "RAS", "LPS", "LAS" or "" (not stated)
+        ("unit", ctypes.c_char * 8),          # "mm", "m", "um" or ""
+    ]
+
+
+class OpenOptions(ctypes.Structure):
+    """isoform_open_options: choices for opening a volume file."""
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("volume", ctypes.c_int),  # volume of a 4-D NIfTI; -1 refuses 4-D files
     ]
 
 
@@ -47,6 +57,26 @@ class RawOptions(ctypes.Structure):
         ("spacing", ctypes.c_double * 3),
         ("origin", ctypes.c_double * 3),
         ("header_bytes", ctypes.c_size_t),
+    ]
+
+
+class PartFilter(ctypes.Structure):
+    """isoform_part_filter: which parts of a mesh to keep."""
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("min_triangles", c_long_long),  # drop parts of fewer triangles; 0 keeps all
+        ("min_volume", ctypes.c_double),  # drop closed parts enclosing less; 0 keeps all
+        ("largest", c_long_long),        # keep the K largest parts; 0 keeps all
+    ]
+
+
+class PartFilterStats(ctypes.Structure):
+    """isoform_part_filter_stats: what isoform_mesh_filter_parts dropped."""
+    _fields_ = [
+        ("parts_before", c_long_long),
+        ("parts_after", c_long_long),
+        ("triangles_before", c_long_long),
+        ("triangles_after", c_long_long),
     ]
 
 
@@ -293,9 +323,12 @@ class CompareMetrics(ctypes.Structure):
 STRUCTS = {
     "isoform_progress": Progress,
     "isoform_grid_info": GridInfo,
+    "isoform_open_options": OpenOptions,
     "isoform_raw_options": RawOptions,
     "isoform_contour_options": ContourOptions,
     "isoform_mesh_stats": MeshStats,
+    "isoform_part_filter": PartFilter,
+    "isoform_part_filter_stats": PartFilterStats,
     "isoform_curvature_options": CurvatureOptions,
     "isoform_curvature_stats": CurvatureStats,
     "isoform_colour_options": ColourOptions,

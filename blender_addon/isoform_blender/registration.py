@@ -7,6 +7,7 @@ from . import (ops_compare, ops_curvature, ops_import, ops_reduce, ops_smooth, o
 _CLASSES = (
     settings.IsoformSettings,
     ops_import.IMPORT_SCENE_OT_isoform_vdb,
+    ops_import.IMPORT_SCENE_OT_isoform_scan,
     ops_volume.OBJECT_OT_isoform_contour,
     ops_curvature.OBJECT_OT_isoform_curvature,
     ops_reduce.OBJECT_OT_isoform_reduce,
@@ -23,6 +24,8 @@ _CLASSES = (
 def _import_menu(self, context):
     self.layout.operator(ops_import.IMPORT_SCENE_OT_isoform_vdb.bl_idname,
                          text="VDB Contour (.vdb)")
+    self.layout.operator(ops_import.IMPORT_SCENE_OT_isoform_scan.bl_idname,
+                         text="Scan Contour (.nii, .nii.gz, .nrrd)")
 
 
 def _object_menu(self, context):

@@ -1,9 +1,12 @@
 // The C API's mesh calls: statistics, copy-out, arrays in, files.
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "../errors.h"
 #include "../mesh_normals.h"
+#include "../part_filter.h"
 #include "../meshio/meshio.h"
 #include "../topology.h"
 #include "handles.h"
@@ -189,5 +192,44 @@ isoform_status isoform_mesh_save_progress(const isoform_mesh* mesh, const char* 
 void isoform_mesh_free(isoform_mesh* mesh) { delete mesh; }
 
 int isoform_mesh_normals_estimated(const isoform_mesh* mesh) { return mesh && mesh->normals_estimated ? 1 : 0; }
+
+}  // extern "C"
+
+extern "C" {
+
+void isoform_part_filter_default(isoform_part_filter* filter) {
+  if (!filter) return;
+  *filter = isoform_part_filter{};
+  filter->struct_size = sizeof *filter;
+}
+
+isoform_status isoform_mesh_filter_parts(isoform_mesh* mesh, const isoform_part_filter* filter,
+                                         isoform_part_filter_stats* stats) {
+  return guarded([&] {
+    const char* what = "isoform_mesh_filter_parts";
+    if (!mesh || !filter) return fail(ISOFORM_ERR_INVALID_ARGUMENT, std::string(what) + ": NULL argument");
+    if (filter->struct_size < offsetof(isoform_part_filter, largest) + sizeof(long long))
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT,
+                  std::string(what) + ": filter.struct_size is not set (call isoform_part_filter_default)");
+    isoform_part_filter known;
+    isoform_part_filter_default(&known);
+    std::memcpy(&known, filter, std::min(filter->struct_size, sizeof known));
+    if (known.min_triangles < 0 || known.largest < 0 || !(known.min_volume >= 0) || std::isinf(known.min_volume))
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT,
+                  std::string(what) + ": min_triangles, min_volume and largest must be finite and not negative");
+    isoform::PartFilter f;
+    f.min_triangles = known.min_triangles;
+    f.min_volume = known.min_volume;
+    f.largest = known.largest;
+    const isoform::PartFilterResult r = isoform::filter_parts(mesh->mesh, f);
+    if (stats) {
+      stats->parts_before = r.parts_before;
+      stats->parts_after = r.parts_after;
+      stats->triangles_before = r.triangles_before;
+      stats->triangles_after = r.triangles_after;
+    }
+    return ISOFORM_OK;
+  });
+}
 
 }  // extern "C"

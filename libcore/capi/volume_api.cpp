@@ -38,6 +38,8 @@ void copy_facts(const isoform::GridFacts& f, isoform_grid_info* out) {
     for (int c = 0; c < 4; ++c) out->transform[4 * a + c] = f.index_to_world.m[a][c];
   }
   out->transform[15] = 1.0;
+  std::strncpy(out->space, f.space.c_str(), sizeof(out->space) - 1);
+  std::strncpy(out->unit, f.unit.c_str(), sizeof(out->unit) - 1);
 }
 
 std::string source_name(const isoform_volume* v) {

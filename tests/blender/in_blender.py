@@ -215,6 +215,45 @@ def case_volume_in_memory_saved_to_temporary_file():
 
 # ---------------------------------------------------------------- errors
 
+def head_series_nifti(name, pixdim_x=3.2):
+    """The CT head as a 4-D NIfTI in millimetres: volume 0 the scan, volume 1
+    half its values; made with nibabel (Blender runs on the system Python)."""
+    import nibabel
+    raw = np.fromfile(os.path.join(ARGS.data, "headsq_64x64x93_u16le.raw"), dtype="<u2")
+    head = raw.reshape(93, 64, 64).transpose(2, 1, 0).astype(np.int16)
+    image = nibabel.Nifti1Image(np.stack([head, head // 2], axis=-1),
+                                np.diag([3.2, 3.2, 1.5, 1.0]))
+    image.header.set_xyzt_units("mm")
+    path = os.path.join(ARGS.scratch, name)
+    nibabel.save(image, path)
+    if pixdim_x != 3.2:  # a damaged copy: pixdim[1] patched in the header
+        import struct
+        data = bytearray(open(path, "rb").read())
+        struct.pack_into("<f", data, 80, pixdim_x)
+        open(path, "wb").write(bytes(data))
+    return path
+
+
+def case_scan_import_picks_the_volume_and_metres():
+    from isoform_blender import native
+    path = head_series_nifti("series.nii")
+    expected = native.contour_file(path, volume=1, isovalue=500.0)
+    before = scene_counts()
+    result = bpy.ops.import_scene.isoform_scan(filepath=path, volume=1, auto_isovalue=False,
+                                               isovalue=500.0)
+    expect(result == {'FINISHED'}, f"operator returned {result}")
+    expect(scene_counts() == tuple(c + 1 for c in before), f"{before} -> {scene_counts()}")
+    obj = bpy.context.view_layer.objects.active
+    expect(obj.name == "series", obj.name)
+    expect(len(obj.data.vertices) == len(expected.points) and len(expected.points) > 1000,
+           f"{len(obj.data.vertices)} vertices, the library's contour of volume 1 has "
+           f"{len(expected.points)}")
+    expect(tuple(obj.scale) == (0.001, 0.001, 0.001) or np.allclose(obj.scale, 0.001),
+           f"millimetres to metres: scale {tuple(obj.scale)}")
+    volume0 = native.contour_file(path, volume=0, isovalue=500.0)
+    expect(len(volume0.points) != len(expected.points), "volume 0 and 1 gave the same contour")
+
+
 def expect_operator_error(operator, fragments, **properties):
     """The operator must fail with a Blender error report holding every
     fragment, and leave the scene as it was."""
@@ -264,6 +303,12 @@ def case_volume_object_errors():
     expect_operator_error(bpy.ops.object.isoform_contour, ["no scalar grid", "velocity"])
     new_volume_object("empty_volume")
     expect_operator_error(bpy.ops.object.isoform_contour, ["empty_volume", "no grids"])
+
+
+def case_damaged_scan():
+    path = head_series_nifti("damaged.nii", pixdim_x=0.0)
+    expect_operator_error(bpy.ops.import_scene.isoform_scan, [path, "pixdim[1], a voxel size, is 0"],
+                          filepath=path)
 
 
 def case_hostile_files():
@@ -340,8 +385,10 @@ GROUPS = {
     "import": [case_import_operator_matches_cli, case_blender_mesh_back_to_the_library,
                case_invoke_in_background_runs_execute,
                case_sidebar_settings_used_when_unset, case_volume_object_from_file,
-               case_volume_in_memory_saved_to_temporary_file],
-    "errors": [case_missing_file, case_vector_grid, case_volume_object_errors, case_hostile_files],
+               case_volume_in_memory_saved_to_temporary_file,
+               case_scan_import_picks_the_volume_and_metres],
+    "errors": [case_missing_file, case_vector_grid, case_volume_object_errors, case_damaged_scan,
+               case_hostile_files],
     "render": [case_cycles_render_not_empty],
 }
 

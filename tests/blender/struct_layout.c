@@ -47,6 +47,27 @@ int main(void) {
   FIELD(isoform_grid_info, bbox_max);
   FIELD(isoform_grid_info, voxel_size);
   FIELD(isoform_grid_info, transform);
+  FIELD(isoform_grid_info, space);
+  FIELD(isoform_grid_info, unit);
+  end();
+
+  begin("isoform_open_options", sizeof(isoform_open_options));
+  FIELD(isoform_open_options, struct_size);
+  FIELD(isoform_open_options, volume);
+  end();
+
+  begin("isoform_part_filter", sizeof(isoform_part_filter));
+  FIELD(isoform_part_filter, struct_size);
+  FIELD(isoform_part_filter, min_triangles);
+  FIELD(isoform_part_filter, min_volume);
+  FIELD(isoform_part_filter, largest);
+  end();
+
+  begin("isoform_part_filter_stats", sizeof(isoform_part_filter_stats));
+  FIELD(isoform_part_filter_stats, parts_before);
+  FIELD(isoform_part_filter_stats, parts_after);
+  FIELD(isoform_part_filter_stats, triangles_before);
+  FIELD(isoform_part_filter_stats, triangles_after);
   end();
 
   begin("isoform_raw_options", sizeof(isoform_raw_options));

@@ -319,6 +319,24 @@ def case_save_load_round_trip():
                       "no.ply")
 
 
+def case_filter_parts_of_two_tetrahedra():
+    """A big and a small tetrahedron: min_triangles, min_volume and largest."""
+    big = TETRA_POINTS * 3.0
+    points = np.concatenate([TETRA_POINTS + 10.0, big]).astype(np.float32)
+    triangles = np.concatenate([TETRA_TRIANGLES, np.asarray(TETRA_TRIANGLES) + 4]).astype(np.int32)
+    with native.Mesh.from_arrays(points, triangles) as mesh:
+        dropped = mesh.filter_parts(min_triangles=5)
+        expect((dropped.parts_before, dropped.parts_after) == (2, 0), f"{dropped}")
+    with native.Mesh.from_arrays(points, triangles) as mesh:
+        small = abs(np.linalg.det(TETRA_POINTS[1:] - TETRA_POINTS[0])) / 6
+        dropped = mesh.filter_parts(min_volume=2 * small)
+        expect((dropped.parts_after, dropped.triangles_after) == (1, 4), f"{dropped}")
+        expect(np.allclose(mesh.points(), big), "the big tetrahedron's points, in order")
+    with native.Mesh.from_arrays(points, triangles) as mesh:
+        expect(mesh.filter_parts(largest=1).parts_after == 1, "largest=1")
+        expect_raises(native.IsoformError, lambda: mesh.filter_parts(min_triangles=-1), "not negative")
+
+
 GROUPS = {
     "layout": [case_layout_matches_c, case_library_reports_header_version],
     "contour": [case_smoke_counts_match_cli, case_tetra_counts_match_cli, case_dense_octahedron,
@@ -327,7 +345,7 @@ GROUPS = {
                case_error_message_is_per_thread, case_bad_arguments],
     "version": [case_wrong_version_refused, case_expected_version_checked, case_library_lookup],
     "arrays": [case_from_arrays_tetrahedron, case_from_arrays_refuses_bad_index,
-               case_save_load_round_trip],
+               case_save_load_round_trip, case_filter_parts_of_two_tetrahedra],
 }
 
 

@@ -252,12 +252,85 @@ static void test_memory_budget(void) {
   CHECK(rmdir(dir) == 0);
 }
 
+/* A 4-D NIfTI-1 of 2x2x2 u8 samples and 2 volumes (0..7, then 10..17),
+ * sform (2, 3, 4 per voxel, offset 1, 2, 3) in millimetres, written byte by
+ * byte in this machine's order. */
+static void write_nifti_series(const char* path) {
+  unsigned char header[352];
+  short dims[8] = {4, 2, 2, 2, 2, 1, 1, 1};
+  float pixdim[8] = {1, 2, 3, 4, 1, 1, 1, 1};
+  float offset = 352, srow[12] = {2, 0, 0, 1, 0, 3, 0, 2, 0, 0, 4, 3};
+  int size = 348;
+  short datatype = 2, bitpix = 8, sform_code = 1;
+  unsigned char samples[16];
+  FILE* f = fopen(path, "wb");
+  int i;
+  memset(header, 0, sizeof header);
+  memcpy(header, &size, 4);
+  memcpy(header + 40, dims, sizeof dims);
+  memcpy(header + 70, &datatype, 2);
+  memcpy(header + 72, &bitpix, 2);
+  memcpy(header + 76, pixdim, sizeof pixdim);
+  memcpy(header + 108, &offset, 4);
+  header[123] = 2; /* millimetres */
+  memcpy(header + 254, &sform_code, 2);
+  memcpy(header + 280, srow, sizeof srow);
+  memcpy(header + 344, "n+1", 4);
+  for (i = 0; i < 16; ++i) samples[i] = (unsigned char)(i < 8 ? i : i + 2);
+  CHECK(f != NULL);
+  if (!f) return;
+  fwrite(header, 1, sizeof header, f);
+  fwrite(samples, 1, sizeof samples, f);
+  fclose(f);
+}
+
+/* Open options: a 4-D file needs a volume; struct_size guards the layout. */
+static void test_open_options(void) {
+  char dir[] = "/tmp/isoform-capi-XXXXXX";
+  char path[256];
+  isoform_volume* v = NULL;
+  isoform_open_options o;
+  isoform_grid_info info;
+  CHECK(mkdtemp(dir) != NULL);
+  snprintf(path, sizeof path, "%s/series.nii", dir);
+  write_nifti_series(path);
+  CHECK(isoform_volume_open(path, &v) == ISOFORM_ERR_UNSUPPORTED && v == NULL);
+  CHECK(strstr(isoform_last_error(), "a 4-D NIfTI of 2 volumes (2x2x2x2)") != NULL);
+  CHECK(strstr(isoform_last_error(), "--volume K") != NULL);
+  CHECK(isoform_volume_open_with(path, NULL, &v) == ISOFORM_ERR_UNSUPPORTED);
+  isoform_open_options_default(&o);
+  CHECK(o.struct_size == sizeof o && o.volume == -1);
+  o.volume = 1;
+  CHECK(isoform_volume_open_with(path, &o, &v) == ISOFORM_OK);
+  CHECK(isoform_volume_grid_info(v, 0, &info) == ISOFORM_OK);
+  CHECK(info.value_min == 10 && info.value_max == 17);
+  CHECK(strcmp(info.space, "RAS") == 0 && strcmp(info.unit, "mm") == 0);
+  CHECK(info.transform[0] == 2 && info.transform[3] == 1 && info.transform[5] == 3 && info.transform[10] == 4);
+  isoform_volume_free(v);
+  v = NULL;
+  o.volume = 2;
+  CHECK(isoform_volume_open_with(path, &o, &v) == ISOFORM_ERR_INVALID_ARGUMENT && v == NULL);
+  o.volume = -2;
+  CHECK(isoform_volume_open_with(path, &o, &v) == ISOFORM_ERR_INVALID_ARGUMENT);
+  o.volume = 0;
+  o.struct_size = 0; /* never filled by _default() */
+  CHECK(isoform_volume_open_with(path, &o, &v) == ISOFORM_ERR_INVALID_ARGUMENT);
+  CHECK(strstr(isoform_last_error(), "struct_size") != NULL);
+  o.struct_size = sizeof o + 64; /* a newer caller's larger struct: the known fields count */
+  CHECK(isoform_volume_open_with(path, &o, &v) == ISOFORM_OK);
+  CHECK(isoform_volume_grid_info(v, 0, &info) == ISOFORM_OK && info.value_max == 7);
+  isoform_volume_free(v);
+  unlink(path);
+  CHECK(rmdir(dir) == 0);
+}
+
 int main(void) {
   test_version_and_errors();
   test_dense_contour_and_copy_out();
   test_options_and_cancel();
   test_phantom_files_round_trip();
   test_memory_budget();
+  test_open_options();
   if (check_failures) fprintf(stderr, "%d checks failed\n", check_failures);
   return check_failures ? 1 : 0;
 }
