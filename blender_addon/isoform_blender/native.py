@@ -479,14 +479,18 @@ class MeshArrays(SimpleNamespace):
                          stats=stats)
 
 
-def contour_file(path, grid="", isovalue=None, method="cells", progress=None, volume=None):
+def contour_file(path, grid="", isovalue=None, method="cells", progress=None, volume=None,
+                 min_part=0):
     """Opens a volume file and contours one grid: the operators' whole job.
-    volume picks the volume of a 4-D NIfTI. The arrays also carry the grid's
-    world unit ("mm", "m", "um" or "") as unit."""
+    volume picks the volume of a 4-D NIfTI; parts of fewer than min_part
+    triangles are dropped. The arrays also carry the grid's world unit ("mm",
+    "m", "um" or "") as unit."""
     with Volume.open(path, volume=volume) as opened:
         index = grid if isinstance(grid, int) else opened.find_grid(grid)
         unit = opened.grid_info(index).unit
         with opened.contour(index, isovalue=isovalue, method=method, progress=progress) as mesh:
+            if min_part > 0:
+                mesh.filter_parts(min_triangles=min_part)
             arrays = mesh.arrays()
     arrays.unit = unit
     return arrays

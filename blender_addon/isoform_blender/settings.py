@@ -39,13 +39,16 @@ class ContourSettings(SharedSettings):
     isovalue: FloatProperty(name="Isovalue", default=0.5, precision=4, options={'SKIP_SAVE'},
                             description="Contour level, in the grid's value units")
     method: EnumProperty(name="Method", items=_METHODS, default="cells", options={'SKIP_SAVE'})
+    min_part: IntProperty(name="Min Part", default=0, min=0, options={'SKIP_SAVE'},
+                          description="Drop parts of fewer triangles (a noisy scan's specks); "
+                                      "0 keeps all")
 
-    _SHARED = ("grid", "auto_isovalue", "isovalue", "method")
+    _SHARED = ("grid", "auto_isovalue", "isovalue", "method", "min_part")
 
     def contour_arguments(self):
         """Keyword arguments of native.contour_file (plain values: thread-safe)."""
         return {"grid": self.grid, "isovalue": None if self.auto_isovalue else self.isovalue,
-                "method": self.method}
+                "method": self.method, "min_part": self.min_part}
 
     def draw_settings(self, layout):
         layout.prop(self, "grid")
@@ -54,6 +57,7 @@ class ContourSettings(SharedSettings):
         row.enabled = not self.auto_isovalue
         row.prop(self, "isovalue")
         layout.prop(self, "method")
+        layout.prop(self, "min_part")
 
 
 _CURVATURE_METHODS = (

@@ -252,6 +252,15 @@ def case_scan_import_picks_the_volume_and_metres():
            f"millimetres to metres: scale {tuple(obj.scale)}")
     volume0 = native.contour_file(path, volume=0, isovalue=500.0)
     expect(len(volume0.points) != len(expected.points), "volume 0 and 1 gave the same contour")
+    # Min Part drops the specks: the library's parts of 200 triangles or more, no others.
+    sizes = np.bincount(expected.parts)
+    result = bpy.ops.import_scene.isoform_scan(filepath=path, volume=1, auto_isovalue=False,
+                                               isovalue=500.0, min_part=200)
+    expect(result == {'FINISHED'}, f"operator returned {result}")
+    kept = bpy.context.view_layer.objects.active
+    expect(len(kept.data.polygons) == int(sizes[sizes >= 200].sum()) and (sizes < 200).any(),
+           f"{len(kept.data.polygons)} triangles kept; parts of 200 or more hold "
+           f"{int(sizes[sizes >= 200].sum())}")
 
 
 def expect_operator_error(operator, fragments, **properties):
