@@ -1,4 +1,5 @@
 // `isoform contour FILE -o OUT`: one grid to a closed triangle mesh file.
+#include <cctype>
 #include <iostream>
 #include <memory>
 
@@ -28,8 +29,28 @@ struct ContourArgs {
   double reduce_seconds = 0.0;
   PartSettings parts;
   isoform_part_filter_stats dropped{};
+  std::string space;       // --space: the patient frame to write in ("" = the input's)
+  std::string from_space;  // the input's frame, when --space converted it
   bool json = false;
 };
+
+// --space: the mesh moved from the grid's stated frame into the one asked
+// (RAS, LPS, LAS differ only in the signs of x and y).
+void convert_space(ContourArgs& args, isoform_mesh* mesh, const isoform_grid_info& info) {
+  if (args.space.empty()) return;
+  const std::string from = info.space;
+  if (from.empty())
+    throw Failure(args.input + ": does not state its patient frame, so --space " + args.space +
+                      " cannot convert it",
+                  2);
+  if (from == args.space) return;
+  const double matrix[16] = {from[0] == args.space[0] ? 1.0 : -1.0, 0, 0, 0,
+                             0, from[1] == args.space[1] ? 1.0 : -1.0, 0, 0,
+                             0, 0, 1, 0,
+                             0, 0, 0, 1};
+  check(isoform_mesh_transform(mesh, matrix));
+  args.from_space = from;
+}
 
 void report_contour(const ContourArgs& args, const isoform_grid_info& info,
                     const ContourResult& result, double write_seconds) {
@@ -44,6 +65,10 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
                         {"contour_seconds", result.seconds},
                         {"write_seconds", write_seconds}};
     j.update(mesh_json(result.stats));
+    if (!args.from_space.empty()) {
+      j["space"] = args.space;
+      j["space_converted_from"] = args.from_space;
+    }
     if (args.parts.wanted()) j.update(parts_json(args.dropped));
     if (args.curvature) j["curvature"] = curvature_json(result.mesh.get());
     if (args.reduce_given) j["reduce"] = reduce_json(result.mesh.get(), args.reduce_seconds);
@@ -52,7 +77,10 @@ void report_contour(const ContourArgs& args, const isoform_grid_info& info,
   }
   std::cout << args.input << ", grid '" << info.name << "' (" << class_name(info.grid_class)
             << "), method " << args.settings.method << '\n';
-  print_row(std::cout, "world frame", frame_text(info));
+  print_row(std::cout, "world frame",
+            args.from_space.empty() ? frame_text(info)
+                                    : args.space + " (converted from " + args.from_space + "), unit " +
+                                          (info.unit[0] ? std::string(info.unit) : "not stated"));
   print_mesh(std::cout, result.stats);
   if (args.parts.wanted()) print_parts(std::cout, args.dropped);
   if (args.curvature) print_curvature(std::cout, result.mesh.get());
@@ -89,10 +117,9 @@ void run_contour(ContourArgs& args) {
   const isoform_grid_info info = grid_info(volume.get(), grid);
   const isoform_part_filter filter = part_filter(args.parts, info.unit, args.input);  // fail before the contour
   ContourResult result = contour_grid(args.input, volume.get(), grid, args.settings);
-  if (args.parts.wanted()) {
-    args.dropped = drop_parts(result.mesh.get(), filter);
-    result.stats = mesh_stats(result.mesh.get());
-  }
+  if (args.parts.wanted()) args.dropped = drop_parts(result.mesh.get(), filter);
+  convert_space(args, result.mesh.get(), info);
+  if (args.parts.wanted() || !args.from_space.empty()) result.stats = mesh_stats(result.mesh.get());
   if (args.curvature)
     compute_curvature(result.mesh.get(), args.curvature_settings, args.settings.threads, args.settings.progress);
   reduce_contour(args, result.mesh.get());
@@ -128,6 +155,14 @@ Command add_contour_command(CLI::App& parent) {
       "Then remove this share of the triangles (Chapter 5, as `isoform reduce`): 90% or 0.9; 0% only checks "
       "the mesh as the reduction would");
   add_part_options(*app, args->parts);
+  app->add_option("--space", args->space,
+                  "Write the mesh in this patient frame: RAS (NIfTI's), LPS (DICOM's) or LAS; the input "
+                  "must state its own (default: the input's frame, unchanged)")
+      ->transform([](std::string s) {
+        for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+        return s;
+      })
+      ->check(CLI::IsMember({"RAS", "LPS", "LAS"}));
   app->add_flag("--json", args->json, "Print one JSON object instead of text");
   return {app, [args, reduce] {
             args->reduce_given = reduce->count() > 0;

@@ -301,6 +301,15 @@ ISOFORM_API isoform_status isoform_mesh_filter_parts(isoform_mesh* mesh,
                                                      const isoform_part_filter* filter,
                                                      isoform_part_filter_stats* stats);
 
+/* Moves the mesh by an affine map, row-major 4x4 (world = matrix * (x, y,
+ * z, 1); the last row must be 0 0 0 1): points by the map, normals by its
+ * inverse transpose, and where the map mirrors (negative determinant) each
+ * triangle's winding reversed, so normals and winding still agree.
+ * Curvature is kept (directions turned) under rotations and mirrors, and
+ * dropped under any other map. Refuses a map that flattens space. From RAS
+ * to LPS and back: diag(-1, -1, 1, 1). */
+ISOFORM_API isoform_status isoform_mesh_transform(isoform_mesh* mesh, const double matrix[16]);
+
 /* Copy-out calls. out must hold 3 * vertex_count floats (points, normals),
  * 3 * triangle_count int32 (triangles: vertex indices, counter-clockwise seen
  * from the side the normals point to; neighbours: for triangle t, entry 3t+i

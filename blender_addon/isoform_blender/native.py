@@ -352,6 +352,12 @@ class Mesh(_Handle):
     def load(cls, path):
         return _make(cls, lambda lib, out: lib.mesh_load(_path_bytes(path), out))
 
+    def transform(self, matrix):
+        """Moves the mesh by a row-major 4x4 affine matrix (last row 0 0 0 1);
+        a mirror reverses the winding so that it agrees with the normals."""
+        values = np.ascontiguousarray(matrix, dtype=np.float64).reshape(16)
+        self._lib.check(self._lib.mesh_transform(self.handle, values.ctypes.data_as(_f64)))
+
     def filter_parts(self, min_triangles=0, min_volume=0.0, largest=0):
         """Drops the parts of fewer triangles, the closed parts enclosing less
         than min_volume (world units cubed), or all but the largest; returns

@@ -37,6 +37,7 @@ SIGNATURES = {
     "isoform_contour": (_int, [_handle, _int, ctypes.POINTER(structs.ContourOptions),
                                ctypes.POINTER(structs.Progress), _handle_out]),
     "isoform_mesh_stats_get": (_int, [_handle, ctypes.POINTER(structs.MeshStats)]),  # mesh, out
+    "isoform_mesh_transform": (_int, [_handle, _f64]),  # mesh, matrix[16]
     "isoform_part_filter_default": (None, [ctypes.POINTER(structs.PartFilter)]),
     # mesh, filter, stats
     "isoform_mesh_filter_parts": (_int, [_handle, ctypes.POINTER(structs.PartFilter),

@@ -6,6 +6,7 @@
 
 #include "../errors.h"
 #include "../mesh_normals.h"
+#include "../mesh_transform.h"
 #include "../part_filter.h"
 #include "../meshio/meshio.h"
 #include "../topology.h"
@@ -227,6 +228,23 @@ isoform_status isoform_mesh_filter_parts(isoform_mesh* mesh, const isoform_part_
       stats->parts_after = r.parts_after;
       stats->triangles_before = r.triangles_before;
       stats->triangles_after = r.triangles_after;
+    }
+    return ISOFORM_OK;
+  });
+}
+
+isoform_status isoform_mesh_transform(isoform_mesh* mesh, const double matrix[16]) {
+  return guarded([&] {
+    if (!mesh || !matrix) return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_transform: NULL argument");
+    if (matrix[12] != 0 || matrix[13] != 0 || matrix[14] != 0 || matrix[15] != 1)
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT, "isoform_mesh_transform: the last row must be 0 0 0 1");
+    isoform::Affine map;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) map.m[r][c] = matrix[4 * r + c];
+    try {
+      isoform::transform_mesh(mesh->mesh, map);
+    } catch (const isoform::InvalidArgument& e) {
+      return fail(ISOFORM_ERR_INVALID_ARGUMENT, std::string("isoform_mesh_transform: ") + e.what());
     }
     return ISOFORM_OK;
   });

@@ -334,6 +334,11 @@ def case_filter_parts_of_two_tetrahedra():
         expect(np.allclose(mesh.points(), big), "the big tetrahedron's points, in order")
     with native.Mesh.from_arrays(points, triangles) as mesh:
         expect(mesh.filter_parts(largest=1).parts_after == 1, "largest=1")
+        before = mesh.points()
+        mesh.transform(np.diag([-1.0, -1.0, 1.0, 1.0]))  # RAS to LPS
+        expect(np.array_equal(mesh.points(), before * [-1, -1, 1]), "points of the half turn")
+        mesh.transform(np.diag([-1.0, 1.0, 1.0, 1.0]))  # a mirror
+        expect(mesh.stats().inconsistent_edges == 0, "the mirror kept the orientation consistent")
         expect_raises(native.IsoformError, lambda: mesh.filter_parts(min_triangles=-1), "not negative")
 
 

@@ -324,6 +324,42 @@ static void test_open_options(void) {
   CHECK(rmdir(dir) == 0);
 }
 
+/* A tetrahedron moved into LPS (a half turn) and mirrored (RAS to LAS):
+ * points moved, still closed and consistently oriented, normals outward. */
+static void test_mesh_transform(void) {
+  const float points[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const int32_t triangles[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  const double lps[16] = {-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const double las[16] = {-1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const double flat[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+  const double* maps[2] = {lps, las};
+  int m;
+  for (m = 0; m < 2; ++m) {
+    isoform_mesh* mesh = NULL;
+    isoform_mesh_stats stats;
+    float moved[12], normals[12];
+    int v;
+    CHECK(isoform_mesh_from_arrays(points, 4, triangles, 4, &mesh) == ISOFORM_OK);
+    CHECK(isoform_mesh_transform(mesh, maps[m]) == ISOFORM_OK);
+    CHECK(isoform_mesh_copy_points(mesh, moved) == ISOFORM_OK);
+    CHECK(isoform_mesh_copy_normals(mesh, normals) == ISOFORM_OK);
+    CHECK(isoform_mesh_stats_get(mesh, &stats) == ISOFORM_OK);
+    CHECK(stats.boundary_edges == 0 && stats.inconsistent_edges == 0 && stats.euler_characteristic == 2);
+    for (v = 0; v < 4; ++v) {
+      const double* t = maps[m];
+      const float* p = points + 3 * v;
+      /* the centroid maps to the moved centroid; normals point away from it */
+      const double c[3] = {t[0] * 0.25 + t[3], t[5] * 0.25 + t[7], 0.25};
+      CHECK(moved[3 * v] == (float)(t[0] * p[0] + t[3]) && moved[3 * v + 1] == (float)(t[5] * p[1] + t[7]));
+      CHECK((moved[3 * v] - c[0]) * normals[3 * v] + (moved[3 * v + 1] - c[1]) * normals[3 * v + 1] +
+                (moved[3 * v + 2] - c[2]) * normals[3 * v + 2] > 0);
+    }
+    CHECK(isoform_mesh_transform(mesh, flat) == ISOFORM_ERR_INVALID_ARGUMENT);
+    CHECK(strstr(isoform_last_error(), "flattens space") != NULL);
+    isoform_mesh_free(mesh);
+  }
+}
+
 int main(void) {
   test_version_and_errors();
   test_dense_contour_and_copy_out();
@@ -331,6 +367,7 @@ int main(void) {
   test_phantom_files_round_trip();
   test_memory_budget();
   test_open_options();
+  test_mesh_transform();
   if (check_failures) fprintf(stderr, "%d checks failed\n", check_failures);
   return check_failures ? 1 : 0;
 }

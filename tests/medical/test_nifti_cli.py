@@ -91,7 +91,7 @@ def test_nifti2_and_no_orientation(tmp_path):
 
 
 def contour_summary(path, out, *extra):
-    return json.loads(isoform(*extra, "contour", path, "--iso", "1150.5", "-o", out, "--json").stdout)
+    return json.loads(isoform("contour", path, "--iso", "1150.5", "-o", out, "--json", *extra).stdout)
 
 
 def test_one_scan_one_contour_from_every_format(tmp_path):
@@ -251,3 +251,24 @@ def test_specks_by_volume_in_millimetres(tmp_path):
     assert ml["parts_dropped"] > 0 and ml["triangles"] == mm3["triangles"]
     err = isoform("contour", tmp_path / "head.nii.gz", "--min-part", "lots", "-o", tmp_path / "c.ply", expect=2).stderr
     assert "--min-part: 'lots' is not a triangle count" in err
+
+
+def test_space_converts_between_patient_frames(tmp_path):
+    image = nibabel.Nifti1Image(headsq().astype(np.int16), oblique_affine())
+    image.header.set_xyzt_units("mm")
+    nibabel.save(image, tmp_path / "head.nii")
+    ras = contour_summary(tmp_path / "head.nii", tmp_path / "ras.ply")
+    lps = contour_summary(tmp_path / "head.nii", tmp_path / "lps.ply", "--space", "lps")
+    las = contour_summary(tmp_path / "head.nii", tmp_path / "las.ply", "--space", "LAS")
+    assert (lps["space"], lps["space_converted_from"]) == ("LPS", "RAS")
+    # RAS to LPS is a half turn about z: x and y change sign.
+    assert np.allclose(lps["bbox_min"], [-ras["bbox_max"][0], -ras["bbox_max"][1], ras["bbox_min"][2]], atol=1e-4)
+    assert np.allclose(las["bbox_max"], [-ras["bbox_min"][0], ras["bbox_max"][1], ras["bbox_max"][2]], atol=1e-4)
+    for summary in (lps, las):  # a mirror (LAS) keeps the mesh consistently oriented
+        for key in ["triangles", "parts", "boundary_edges", "nonmanifold_edges", "inconsistent_edges"]:
+            assert summary[key] == ras[key], key
+    isoform("convert", os.path.join(DATA, "headsq_64x64x93_u16le.raw"), "--dims", "64,64,93", "-o",
+            tmp_path / "raw.vdb")
+    err = isoform("contour", tmp_path / "raw.vdb", "--iso", "1150.5", "--space", "LPS", "-o", tmp_path / "x.ply",
+                  expect=2).stderr
+    assert "does not state its patient frame" in err and not (tmp_path / "x.ply").exists()
