@@ -3,11 +3,15 @@
 // before it reads a byte of data, and follows any "data file" it names.
 #include "nrrd_check.h"
 
+#include <bzlib.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "gzip_inflate.h"
 #include "input_file.h"
@@ -86,6 +90,13 @@ Header read_header(const std::string& path) {
     std::string key;
     for (char c : line.substr(0, colon))
       if (c != ' ') key += char(std::tolower(static_cast<unsigned char>(c)));
+    // Teem leaks what it has parsed when a per-axis field comes before the
+    // dimension (and refuses the file then anyway).
+    static const char* const kPerAxis[] = {"sizes",  "spacings", "thicknesses", "axismins", "axismaxs", "centers",
+                                           "centerings", "labels", "units", "kinds", "spacedirections"};
+    if (!h.fields.count("dimension") &&
+        std::find(std::begin(kPerAxis), std::end(kPerAxis), key) != std::end(kPerAxis))
+      throw FormatError(path + ": NRRD field \"" + line.substr(0, colon) + "\" comes before the dimension");
     h.fields[key] = trim(line.substr(colon + 2));
   }
 }
@@ -109,6 +120,35 @@ void check_gzip_data(const std::string& path, const std::string& data, uint64_t 
                       std::to_string(bytes) + " bytes its sizes need" +
                       (inflated.damaged ? " (they do not decode)" : ""));
   if (inflated.damaged) throw FormatError(path + ": NRRD gzip data do not decode (a damaged stream or check sum)");
+}
+
+// Teem's bzip2 reader leaks its stream when the data do not decode, so
+// they are decoded here first (and dropped), no further than the sizes need.
+void check_bzip2_data(const std::string& path, const std::string& data, uint64_t start, uint64_t bytes) {
+  std::ifstream in(data, std::ios::binary);
+  in.seekg(std::streamoff(start));
+  bz_stream z{};
+  if (BZ2_bzDecompressInit(&z, 0, 0) != BZ_OK) throw FormatError(path + ": cannot start decoding its bzip2 data");
+  std::vector<char> packed(size_t(1) << 16), plain(size_t(1) << 18);
+  uint64_t got = 0;
+  int status = BZ_OK;
+  while (got < bytes && status == BZ_OK) {
+    if (z.avail_in == 0) {
+      in.read(packed.data(), std::streamsize(packed.size()));
+      z.next_in = packed.data();
+      z.avail_in = unsigned(in.gcount());
+      if (z.avail_in == 0) break;
+    }
+    const unsigned room = unsigned(std::min<uint64_t>(plain.size(), bytes - got));
+    z.next_out = plain.data();
+    z.avail_out = room;
+    status = BZ2_bzDecompress(&z);
+    got += room - z.avail_out;
+  }
+  BZ2_bzDecompressEnd(&z);
+  if (got < bytes)
+    throw FormatError(path + ": NRRD bzip2 data give " + std::to_string(got) + " of the " + std::to_string(bytes) +
+                      " bytes its sizes need" + (status < 0 ? " (they do not decode)" : ""));
 }
 
 }  // namespace
@@ -168,6 +208,7 @@ void check_nrrd_header(const std::string& path, uint64_t memory_budget) {
                       size_text(bytes + count * 4) + " in memory, beyond the budget of " +
                       size_text(memory_budget));
   if (encoding == "gzip" || encoding == "gz") check_gzip_data(path, data, start, bytes);
+  if (encoding == "bzip2" || encoding == "bz2") check_bzip2_data(path, data, start, bytes);
 }
 
 }  // namespace isoform::vdbio

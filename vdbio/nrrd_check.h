@@ -5,7 +5,8 @@
 // gzip data that cannot expand that far: deflate's ratio is at most 1032
 // to 1, text with fewer numbers than samples), whose array would pass the
 // memory budget, or whose data lie in several files; gzip data that end
-// early or do not decode (Teem's gzip reader leaks its stream on them); and
+// early or do not decode, and bzip2 data that do not give the array's bytes
+// (Teem's gzip and bzip2 readers leak their streams on them); and
 // a first line that is not NRRD0001 to NRRD0005 (Teem leaks a little when
 // it refuses one).
 #pragma once

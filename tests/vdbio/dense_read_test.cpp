@@ -2,6 +2,7 @@
 #include "vdbio/dense_read.h"
 
 #include <gtest/gtest.h>
+#include <bzlib.h>
 #include <teem/nrrd.h>
 
 #include <algorithm>
@@ -219,6 +220,37 @@ TEST(DenseRead, NrrdGzipDataThatEndEarlyOrDoNotDecode) {
   write_bytes(check_sum, crc);
   EXPECT_EQ(error_of<FormatError>([&] { read_nrrd(check_sum); }),
             check_sum + ": NRRD gzip data do not decode (a damaged stream or check sum)");
+}
+
+// fuzz_nrrd: Teem's bzip2 reader leaks its stream on data that do not
+// decode; the check decodes them first. A good bzip2 NRRD still reads.
+TEST(DenseRead, NrrdBzip2DataThatDoNotDecodeAreRefused) {
+  TempDir dir;
+  std::vector<float> values(16 * 16 * 16);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = float((i * 7919) % 97);
+  std::vector<char> packed(values.size() * 8 + 600);
+  unsigned packed_size = unsigned(packed.size());
+  ASSERT_EQ(BZ2_bzBuffToBuffCompress(packed.data(), &packed_size, reinterpret_cast<char*>(values.data()),
+                                     unsigned(values.size() * 4), 9, 0, 0),
+            BZ_OK);
+  const std::string header =
+      "NRRD0004\ntype: float\ndimension: 3\nsizes: 16 16 16\nendian: little\nencoding: bzip2\n\n";
+  const std::string good = dir.file("good.nrrd"), cut = dir.file("cut.nrrd"), text = dir.file("text.nrrd");
+  write_bytes(good, header + std::string(packed.data(), packed_size));
+  EXPECT_EQ(samples_of(*read_nrrd(good)), values);
+  write_bytes(cut, header + std::string(packed.data(), packed_size / 2));
+  EXPECT_EQ(error_of<FormatError>([&] { read_nrrd(cut); }).rfind(cut + ": NRRD bzip2 data give ", 0), 0u);
+  // The finding's shape: hex digits where bzip2 data should be.
+  write_bytes(text, "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 6 5 4\nencoding: bz2\n\n"
+                    "e70f23230fe7052d41412d050f374b4b370f052d41452d05e7");
+  EXPECT_EQ(error_of<FormatError>([&] { read_nrrd(text); }),
+            text + ": NRRD bzip2 data give 0 of the 120 bytes its sizes need (they do not decode)");
+  // fuzz_nrrd: a per-axis field before the dimension makes Teem leak.
+  const std::string early = dir.file("early.nrrd");
+  write_bytes(early, "NRRD0004\ntype: uchar\ncenterings: cell cell cell\ndimension: 3\nsizes: 2 2 2\n"
+                     "encoding: raw\n\n12345678");
+  EXPECT_EQ(error_of<FormatError>([&] { read_nrrd(early); }),
+            early + ": NRRD field \"centerings\" comes before the dimension");
 }
 
 TEST(DenseRead, NrrdErrors) {
